@@ -1,0 +1,252 @@
+/*
+ * ffl_test.h - the one header every C test program includes.
+ *
+ * One source, two builds:
+ *   fflight: gcc -std=c99 ... -Iinclude prog.c target/debug/libfflight.a -lm -lpthread -ldl
+ *   OSMesa:  gcc -std=c99 ... -DFFL_OSMESA prog.c -lOSMesa -lm
+ *
+ * Output protocol (read by tests/c_programs.rs):
+ *   - Every line is a list of whitespace-separated tokens. A token that parses
+ *     as a number is compared with a tolerance; any other token must be equal.
+ *   - The last non-numeric token before a number is its label. Numbers labelled
+ *     xy, xyz or xyzw are window coordinates (looser tolerance); every other
+ *     number is compared with the color tolerance.
+ *   - A line may contain the token `ref`: the labelled groups after it are the
+ *     program's own double-precision evaluation of the spec, and each is
+ *     checked against the group with the same label before `ref`.
+ *   - A token `osmesa-exempt=<reason>` on such a line says OSMesa is known to
+ *     differ from the spec there: the groups covered by `ref` are compared
+ *     with the reference only, never across builds.
+ *   - The first line of each program is a comment naming its mode,
+ *     "ffl-test: differential" (both builds, outputs compared), "ffl-test:
+ *     fflight-only" (the program checks itself; exit status decides) or
+ *     "ffl-test: osmesa-diff" (shows a known OSMesa-vs-spec difference: only
+ *     the fflight build is checked against the program's reference).
+ */
+#ifndef FFL_TEST_H
+#define FFL_TEST_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <math.h>
+
+#ifdef FFL_OSMESA
+#include <GL/gl.h>
+#include <GL/osmesa.h>
+#define FFL_IMPL_NAME "osmesa"
+#else
+#include "fflight.h"
+#define FFL_IMPL_NAME "fflight"
+#endif
+
+#define FFL_PI 3.14159265358979323846
+
+/* Creates and binds the rendering context. fflight needs none (a default
+ * context is made lazily per thread); OSMesa needs a context and a buffer.
+ * Every program sets glViewport itself: the default viewports may differ. */
+static inline void ffl_test_init(void)
+{
+#ifdef FFL_OSMESA
+    static GLubyte color_buffer[64 * 64 * 4];
+    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    if (ctx == NULL) {
+        fprintf(stderr, "OSMesaCreateContextExt failed\n");
+        exit(2);
+    }
+    if (!OSMesaMakeCurrent(ctx, color_buffer, GL_UNSIGNED_BYTE, 64, 64)) {
+        fprintf(stderr, "OSMesaMakeCurrent failed\n");
+        exit(2);
+    }
+#endif
+}
+
+/* ---- canonical printing ------------------------------------------------ */
+
+/* Prints " <value>" with 9 significant digits (enough to round-trip a float);
+ * -0 prints as 0, NaN as nan, infinities as inf / -inf. */
+static inline void ffl_pf(double v)
+{
+    if (v != v) {
+        fputs(" nan", stdout);
+    } else if (v == HUGE_VAL) {
+        fputs(" inf", stdout);
+    } else if (v == -HUGE_VAL) {
+        fputs(" -inf", stdout);
+    } else {
+        if (v == 0.0)
+            v = 0.0;
+        printf(" %.9g", v);
+    }
+}
+
+/* Prints " label v0 v1 ... v(n-1)". */
+static inline void ffl_pfv(const char *label, const float *v, int n)
+{
+    int i;
+    printf(" %s", label);
+    for (i = 0; i < n; i++)
+        ffl_pf(v[i]);
+}
+
+static inline void ffl_pdv(const char *label, const double *v, int n)
+{
+    int i;
+    printf(" %s", label);
+    for (i = 0; i < n; i++)
+        ffl_pf(v[i]);
+}
+
+static inline const char *ffl_error_name(GLenum e)
+{
+    switch (e) {
+    case GL_NO_ERROR: return "GL_NO_ERROR";
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_STACK_OVERFLOW: return "GL_STACK_OVERFLOW";
+    case GL_STACK_UNDERFLOW: return "GL_STACK_UNDERFLOW";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    default: return "GL_UNKNOWN_ERROR";
+    }
+}
+
+/* Prints "<what> <error name>" for the next glGetError. */
+static inline void ffl_print_error(const char *what)
+{
+    printf("%s %s\n", what, ffl_error_name(glGetError()));
+}
+
+/* Number of values per vertex in a feedback buffer of the given type. */
+static inline int ffl_feedback_vertex_size(GLenum type)
+{
+    switch (type) {
+    case GL_2D: return 2;
+    case GL_3D: return 3;
+    case GL_3D_COLOR: return 7;
+    case GL_3D_COLOR_TEXTURE: return 11;
+    case GL_4D_COLOR_TEXTURE: return 12;
+    default: return 0;
+    }
+}
+
+/* Prints one fed-back vertex: " xy|xyz|xyzw ... rgba ... stuv ...". */
+static inline void ffl_print_feedback_vertex(const GLfloat *v, GLenum type)
+{
+    switch (type) {
+    case GL_2D: ffl_pfv("xy", v, 2); break;
+    case GL_3D: ffl_pfv("xyz", v, 3); break;
+    case GL_3D_COLOR: ffl_pfv("xyz", v, 3); ffl_pfv("rgba", v + 3, 4); break;
+    case GL_3D_COLOR_TEXTURE:
+        ffl_pfv("xyz", v, 3); ffl_pfv("rgba", v + 3, 4); ffl_pfv("strq", v + 7, 4);
+        break;
+    case GL_4D_COLOR_TEXTURE:
+        ffl_pfv("xyzw", v, 4); ffl_pfv("rgba", v + 4, 4); ffl_pfv("strq", v + 8, 4);
+        break;
+    default: break;
+    }
+}
+
+/* Prints a feedback buffer of n values, one line per token, each prefixed with
+ * `prefix`. Returns 0 if the buffer parsed cleanly, 1 otherwise (a line
+ * saying why is printed, so the outputs differ). */
+static inline int ffl_print_feedback(const char *prefix, const GLfloat *buf, GLint n, GLenum type)
+{
+    int vs = ffl_feedback_vertex_size(type);
+    GLint i = 0;
+    while (i < n) {
+        GLfloat token = buf[i++];
+        int nverts = 0;
+        const char *name = NULL;
+        if (token == (GLfloat)GL_PASS_THROUGH_TOKEN) {
+            if (i >= n) break;
+            printf("%s pass", prefix);
+            ffl_pf(buf[i++]);
+            printf("\n");
+            continue;
+        } else if (token == (GLfloat)GL_POINT_TOKEN) {
+            name = "point"; nverts = 1;
+        } else if (token == (GLfloat)GL_LINE_TOKEN) {
+            name = "line"; nverts = 2;
+        } else if (token == (GLfloat)GL_LINE_RESET_TOKEN) {
+            name = "line_reset"; nverts = 2;
+        } else if (token == (GLfloat)GL_POLYGON_TOKEN) {
+            if (i >= n) break;
+            name = "polygon"; nverts = (int)buf[i++];
+        } else if (token == (GLfloat)GL_BITMAP_TOKEN) {
+            name = "bitmap"; nverts = 1;
+        } else if (token == (GLfloat)GL_DRAW_PIXEL_TOKEN) {
+            name = "draw_pixel"; nverts = 1;
+        } else if (token == (GLfloat)GL_COPY_PIXEL_TOKEN) {
+            name = "copy_pixel"; nverts = 1;
+        } else {
+            printf("%s unknown_token", prefix);
+            ffl_pf(token);
+            printf("\n");
+            return 1;
+        }
+        printf("%s %s %d\n", prefix, name, nverts);
+        while (nverts-- > 0) {
+            if (i + vs > n) {
+                printf("%s truncated\n", prefix);
+                return 1;
+            }
+            printf("%s  v", prefix);
+            ffl_print_feedback_vertex(buf + i, type);
+            printf("\n");
+            i += vs;
+        }
+    }
+    if (i != n) {
+        printf("%s truncated\n", prefix);
+        return 1;
+    }
+    return 0;
+}
+
+/* ---- deterministic pseudo-random numbers (splitmix64) ------------------- */
+
+typedef struct {
+    uint64_t state;
+} ffl_rng;
+
+static inline void ffl_rng_seed(ffl_rng *r, uint64_t seed)
+{
+    r->state = seed;
+}
+
+static inline uint64_t ffl_rng_u64(ffl_rng *r)
+{
+    uint64_t z = (r->state += UINT64_C(0x9E3779B97F4A7C15));
+    z = (z ^ (z >> 30)) * UINT64_C(0xBF58476D1CE4E5B9);
+    z = (z ^ (z >> 27)) * UINT64_C(0x94D049BB133111EB);
+    return z ^ (z >> 31);
+}
+
+/* Uniform in [0, 1), 53 bits. */
+static inline double ffl_rng_unit(ffl_rng *r)
+{
+    return (double)(ffl_rng_u64(r) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* Uniform float in [lo, hi]: returned as a float so GL and the reference
+ * consume exactly the same value. */
+static inline float ffl_rng_float(ffl_rng *r, double lo, double hi)
+{
+    return (float)(lo + (hi - lo) * ffl_rng_unit(r));
+}
+
+/* Uniform integer in [0, n). */
+static inline int ffl_rng_int(ffl_rng *r, int n)
+{
+    return (int)(ffl_rng_u64(r) % (uint64_t)n);
+}
+
+/* True with probability p. */
+static inline int ffl_rng_chance(ffl_rng *r, double p)
+{
+    return ffl_rng_unit(r) < p;
+}
+
+#endif /* FFL_TEST_H */
