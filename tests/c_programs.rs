@@ -1,0 +1,667 @@
+//! Runs the C programs in `c_tests/`: each is compiled against fflight's C
+//! header and static library and, for the differential ones, unchanged
+//! against Mesa's OSMesa; the canonical text they print is compared token by
+//! token (the protocol is described at the top of `c_tests/ffl_test.h`).
+//!
+//! The first line of a program names its mode:
+//! - `/* ffl-test: differential */`: both builds; their outputs must agree,
+//!   and every `ref` group must agree with the program's own reference (on
+//!   OSMesa too, except on lines marked `osmesa-exempt=<reason>`).
+//! - `/* ffl-test: fflight-only */`: only the fflight build; the program
+//!   checks itself and its exit status decides (its `ref` groups are checked).
+//! - `/* ffl-test: osmesa-diff */`: shows a known OSMesa-vs-spec difference:
+//!   both builds run and their outputs are printed, only the fflight build is
+//!   checked against the program's reference.
+//!
+//! Build outputs go to `target/c_tests/`. Without OSMesa installed the tests
+//! fail with a message, unless `FFL_NO_OSMESA=1` is set: then the OSMesa side
+//! is skipped and only the fflight build is checked.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// Colors and every other non-coordinate number: the lighting results of two
+/// float32 implementations of the same equation differ by a few ulps of the
+/// largest term (measured: OSMesa vs the double-precision reference within
+/// 5.2e-6 over 10,400 random vertices); 1e-5 is twice that.
+const COLOR_TOLERANCE: f64 = 1e-5;
+
+/// Window coordinates (labels `xy`, `xyz`, `xyzw`). They are the end of a
+/// chain of float32 steps (modelview, projection, perspective divide,
+/// viewport), each rounding relative to operands that can be larger than the
+/// result, and two correct implementations may associate the sums
+/// differently. A float32 ulp is 1.2e-7 |v|: we allow about 16 ulps relative
+/// (2e-6 |v|, 6.4e-5 at x = 32 in a 64-pixel viewport), with the color
+/// tolerance as the floor for small values (depth in [0, 1]).
+fn coordinate_tolerance(v: f64) -> f64 {
+    COLOR_TOLERANCE.max(2e-6 * v.abs())
+}
+
+fn is_coordinate_label(label: &str) -> bool {
+    matches!(label, "xy" | "xyz" | "xyzw")
+}
+
+fn tolerance(label: &str, a: f64, b: f64) -> f64 {
+    if is_coordinate_label(label) {
+        coordinate_tolerance(a.abs().max(b.abs()))
+    } else {
+        COLOR_TOLERANCE
+    }
+}
+
+/// How long one program may run.
+const RUN_TIMEOUT: Duration = Duration::from_secs(150);
+
+const EXEMPT_PREFIX: &str = "osmesa-exempt=";
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Mode {
+    Differential,
+    FflightOnly,
+    OsmesaDiff,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Build {
+    Fflight,
+    Osmesa,
+}
+
+impl Build {
+    fn name(self) -> &'static str {
+        match self {
+            Build::Fflight => "fflight",
+            Build::Osmesa => "osmesa",
+        }
+    }
+}
+
+fn manifest_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn out_dir() -> PathBuf {
+    let dir = manifest_dir().join("target").join("c_tests");
+    std::fs::create_dir_all(&dir).expect("create target/c_tests");
+    dir
+}
+
+/// The static library to link. `cargo test` builds it next to this test
+/// binary (target/<profile>/deps/libfflight.a) while `cargo build` puts it in
+/// target/<profile>/: take the newer, so a stale `cargo build` output never
+/// shadows the library this test run just compiled.
+fn static_library() -> PathBuf {
+    let mut candidates = Vec::new();
+    if let Ok(exe) = std::env::current_exe() {
+        if let Some(deps) = exe.parent() {
+            candidates.push(deps.join("libfflight.a"));
+            if let Some(profile) = deps.parent() {
+                candidates.push(profile.join("libfflight.a"));
+            }
+        }
+    }
+    candidates.push(manifest_dir().join("target/debug/libfflight.a"));
+    candidates
+        .iter()
+        .filter_map(|p| {
+            let modified = std::fs::metadata(p).and_then(|m| m.modified()).ok()?;
+            Some((modified, p.clone()))
+        })
+        .max()
+        .map(|(_, p)| p)
+        .unwrap_or_else(|| {
+            panic!(
+                "libfflight.a not found (looked at {candidates:?}); the crate's \
+                 crate-type must include \"staticlib\": run `cargo build` and retry"
+            )
+        })
+}
+
+fn osmesa_wanted() -> bool {
+    if std::env::var_os("FFL_NO_OSMESA").is_some_and(|v| v == "1") {
+        return false;
+    }
+    assert!(
+        Path::new("/usr/include/GL/osmesa.h").exists(),
+        "OSMesa is not installed: `apt-get install -y libosmesa6-dev`, \
+         or set FFL_NO_OSMESA=1 to check the fflight builds alone"
+    );
+    true
+}
+
+fn read_mode(source: &Path) -> Mode {
+    let text = std::fs::read_to_string(source)
+        .unwrap_or_else(|e| panic!("read {}: {e}", source.display()));
+    let first = text.lines().next().unwrap_or("");
+    if first.contains("ffl-test: differential") {
+        Mode::Differential
+    } else if first.contains("ffl-test: fflight-only") {
+        Mode::FflightOnly
+    } else if first.contains("ffl-test: osmesa-diff") {
+        Mode::OsmesaDiff
+    } else {
+        panic!(
+            "{}: the first line must be /* ffl-test: differential */, \
+             /* ffl-test: fflight-only */ or /* ffl-test: osmesa-diff */",
+            source.display()
+        )
+    }
+}
+
+const CFLAGS: &[&str] = &["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O1", "-g"];
+
+fn compile(name: &str, build: Build) -> PathBuf {
+    let root = manifest_dir();
+    let source = root.join("c_tests").join(format!("{name}.c"));
+    let exe = out_dir().join(format!("{name}.{}", build.name()));
+    let mut cmd = Command::new(std::env::var("CC").unwrap_or_else(|_| "gcc".into()));
+    cmd.args(CFLAGS).arg("-I").arg(root.join("c_tests"));
+    match build {
+        Build::Fflight => {
+            cmd.arg("-I")
+                .arg(root.join("include"))
+                .arg(&source)
+                .arg(static_library())
+                .args(["-lm", "-lpthread", "-ldl"]);
+        }
+        Build::Osmesa => {
+            cmd.arg("-DFFL_OSMESA").arg(&source).args(["-lOSMesa", "-lm"]);
+        }
+    }
+    cmd.arg("-o").arg(&exe);
+    let out = cmd.output().expect("run the C compiler (gcc, or $CC)");
+    assert!(
+        out.status.success(),
+        "compiling c_tests/{name}.c for {} failed:\n{cmd:?}\n{}{}",
+        build.name(),
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    exe
+}
+
+struct RunOutput {
+    stdout: String,
+    stderr: String,
+    success: bool,
+    status: String,
+}
+
+fn run(exe: &Path) -> RunOutput {
+    let mut child = Command::new(exe)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("run {}: {e}", exe.display()));
+    // Drain the pipes on threads so a chatty program cannot block.
+    let mut out_pipe = child.stdout.take().unwrap();
+    let mut err_pipe = child.stderr.take().unwrap();
+    let out_thread = std::thread::spawn(move || {
+        let mut s = Vec::new();
+        out_pipe.read_to_end(&mut s).ok();
+        s
+    });
+    let err_thread = std::thread::spawn(move || {
+        let mut s = Vec::new();
+        err_pipe.read_to_end(&mut s).ok();
+        s
+    });
+    let start = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().expect("wait for a C program") {
+            break status;
+        }
+        if start.elapsed() > RUN_TIMEOUT {
+            child.kill().ok();
+            child.wait().ok();
+            panic!("{} ran longer than {RUN_TIMEOUT:?}", exe.display());
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    };
+    RunOutput {
+        stdout: String::from_utf8_lossy(&out_thread.join().unwrap()).into_owned(),
+        stderr: String::from_utf8_lossy(&err_thread.join().unwrap()).into_owned(),
+        success: status.success(),
+        status: format!("{status}"),
+    }
+}
+
+/// A number token: Rust parses `nan`, `inf` and `-inf` as ffl_pf prints them.
+fn number(token: &str) -> Option<f64> {
+    token.parse::<f64>().ok()
+}
+
+/// The labelled number groups of a run of tokens (flags are skipped).
+fn groups<'a>(tokens: &[&'a str]) -> Vec<(&'a str, Vec<f64>)> {
+    let mut out: Vec<(&str, Vec<f64>)> = Vec::new();
+    for &t in tokens {
+        if t.starts_with(EXEMPT_PREFIX) {
+            continue;
+        }
+        match number(t) {
+            Some(v) => match out.last_mut() {
+                Some((_, values)) => values.push(v),
+                None => out.push(("", vec![v])),
+            },
+            None => out.push((t, Vec::new())),
+        }
+    }
+    out
+}
+
+fn exemption(tokens: &[&str]) -> Option<String> {
+    tokens
+        .iter()
+        .find_map(|t| t.strip_prefix(EXEMPT_PREFIX))
+        .map(str::to_string)
+}
+
+fn close(a: f64, b: f64, tol: f64) -> bool {
+    if a.is_nan() || b.is_nan() {
+        return a.is_nan() && b.is_nan();
+    }
+    if a.is_infinite() || b.is_infinite() {
+        return a == b;
+    }
+    (a - b).abs() <= tol
+}
+
+/// Largest differences seen, per kind of number.
+#[derive(Default)]
+struct MaxDiff {
+    color: f64,
+    coordinate: f64,
+    compared: usize,
+}
+
+impl MaxDiff {
+    fn record(&mut self, label: &str, a: f64, b: f64) {
+        if a.is_finite() && b.is_finite() {
+            let d = (a - b).abs();
+            if is_coordinate_label(label) {
+                self.coordinate = self.coordinate.max(d);
+            } else {
+                self.color = self.color.max(d);
+            }
+        }
+        self.compared += 1;
+    }
+}
+
+struct Report {
+    program: String,
+    failures: Vec<String>,
+    notes: Vec<String>,
+}
+
+const MAX_FAILURES_SHOWN: usize = 25;
+
+impl Report {
+    fn new(program: &str) -> Self {
+        Report {
+            program: program.to_string(),
+            failures: Vec::new(),
+            notes: Vec::new(),
+        }
+    }
+
+    fn fail(&mut self, msg: String) {
+        self.failures.push(msg);
+    }
+}
+
+/// Checks every `ref` group of one output against the implementation's group
+/// with the same label. Lines marked exempt are counted in `exempt` and
+/// skipped when `honor_exemptions` is set.
+fn check_references(
+    report: &mut Report,
+    build: Build,
+    output: &str,
+    honor_exemptions: bool,
+    stats: &mut MaxDiff,
+    exempt: &mut BTreeMap<String, usize>,
+) {
+    for (index, line) in output.lines().enumerate() {
+        let tokens: Vec<&str> = line.split_whitespace().collect();
+        let Some(split) = tokens.iter().position(|&t| t == "ref") else {
+            continue;
+        };
+        if let Some(reason) = exemption(&tokens) {
+            *exempt.entry(reason).or_default() += 1;
+            if honor_exemptions {
+                continue;
+            }
+        }
+        let implementation = groups(&tokens[..split]);
+        for (label, expected) in groups(&tokens[split + 1..]) {
+            let Some((_, got)) = implementation.iter().find(|(l, _)| *l == label) else {
+                report.fail(format!(
+                    "{} line {}: ref group `{label}` has no counterpart\n  {line}",
+                    build.name(),
+                    index + 1
+                ));
+                continue;
+            };
+            if got.len() != expected.len() {
+                report.fail(format!(
+                    "{} line {}: `{label}` has {} values, its ref {}\n  {line}",
+                    build.name(),
+                    index + 1,
+                    got.len(),
+                    expected.len()
+                ));
+                continue;
+            }
+            for (k, (&g, &e)) in got.iter().zip(&expected).enumerate() {
+                stats.record(label, g, e);
+                let tol = tolerance(label, g, e);
+                if !close(g, e, tol) {
+                    report.fail(format!(
+                        "{} vs reference, line {}: {label}[{k}] = {g:.9} expected {e:.9} \
+                         (|diff| {:.3e} > tolerance {tol:.1e})\n  {line}",
+                        build.name(),
+                        index + 1,
+                        (g - e).abs()
+                    ));
+                }
+            }
+        }
+    }
+}
+
+/// Compares the fflight output with the OSMesa output token by token.
+fn check_differential(report: &mut Report, fflight: &str, osmesa: &str, stats: &mut MaxDiff) {
+    let a: Vec<&str> = fflight.lines().collect();
+    let b: Vec<&str> = osmesa.lines().collect();
+    if a.len() != b.len() {
+        report.fail(format!(
+            "fflight printed {} lines, OSMesa {}",
+            a.len(),
+            b.len()
+        ));
+    }
+    for (index, (la, lb)) in a.iter().zip(&b).enumerate() {
+        let ta: Vec<&str> = la.split_whitespace().collect();
+        let tb: Vec<&str> = lb.split_whitespace().collect();
+        let where_ = || format!("line {}\n  fflight: {la}\n  osmesa:  {lb}", index + 1);
+        if ta.len() != tb.len() {
+            report.fail(format!("token counts differ, {}", where_()));
+            continue;
+        }
+        // On an exempt line the groups the reference covers are compared
+        // with the reference only.
+        let split = ta.iter().position(|&t| t == "ref");
+        let exempt_labels: Vec<&str> = match (exemption(&ta), split) {
+            (Some(_), Some(split)) => groups(&ta[split + 1..]).iter().map(|g| g.0).collect(),
+            _ => Vec::new(),
+        };
+        let mut label = "";
+        for (k, (&x, &y)) in ta.iter().zip(&tb).enumerate() {
+            match (number(x), number(y)) {
+                (Some(u), Some(v)) => {
+                    let before_ref = split.is_none_or(|s| k < s);
+                    if before_ref && exempt_labels.contains(&label) {
+                        continue;
+                    }
+                    stats.record(label, u, v);
+                    let tol = tolerance(label, u, v);
+                    if !close(u, v, tol) {
+                        report.fail(format!(
+                            "`{label}` token {k}: fflight {u:.9} OSMesa {v:.9} \
+                             (|diff| {:.3e} > tolerance {tol:.1e}), {}",
+                            (u - v).abs(),
+                            where_()
+                        ));
+                    }
+                }
+                _ => {
+                    if x != y {
+                        report.fail(format!("token {k}: `{x}` vs `{y}`, {}", where_()));
+                    }
+                    if !x.starts_with(EXEMPT_PREFIX) {
+                        label = x;
+                    }
+                }
+            }
+        }
+    }
+}
+
+fn summarize(stats: &MaxDiff) -> String {
+    format!(
+        "{} numbers, max |diff| colors {:.3e}, coordinates {:.3e}",
+        stats.compared, stats.color, stats.coordinate
+    )
+}
+
+/// Compiles and runs one program in every build its mode asks for, checks
+/// the outputs, prints a summary and panics with every failure found.
+fn run_program(name: &str) {
+    let source = manifest_dir().join("c_tests").join(format!("{name}.c"));
+    let mode = read_mode(&source);
+    let mut builds = vec![Build::Fflight];
+    let with_osmesa = mode != Mode::FflightOnly && osmesa_wanted();
+    if with_osmesa {
+        builds.push(Build::Osmesa);
+    }
+
+    // Compile and run the builds in parallel.
+    let results: Vec<(Build, RunOutput)> = std::thread::scope(|scope| {
+        let handles: Vec<_> = builds
+            .iter()
+            .map(|&build| scope.spawn(move || (build, run(&compile(name, build)))))
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| match h.join() {
+                Ok(r) => r,
+                Err(panic) => std::panic::resume_unwind(panic),
+            })
+            .collect()
+    });
+    for (build, out) in &results {
+        std::fs::write(out_dir().join(format!("{name}.{}.txt", build.name())), &out.stdout).ok();
+    }
+
+    let mut report = Report::new(name);
+    for (build, out) in &results {
+        if !out.success {
+            report.fail(format!(
+                "the {} build exited with {}; stderr:\n{}\nlast lines of stdout:\n{}",
+                build.name(),
+                out.status,
+                out.stderr,
+                tail(&out.stdout, 10)
+            ));
+        }
+    }
+
+    let fflight = &results[0].1.stdout;
+    let osmesa = results.get(1).map(|r| &r.1.stdout);
+    let mut summary = String::new();
+
+    let mut ff_ref = MaxDiff::default();
+    let mut exempt = BTreeMap::new();
+    check_references(&mut report, Build::Fflight, fflight, false, &mut ff_ref, &mut exempt);
+    if ff_ref.compared > 0 {
+        writeln!(summary, "  fflight vs reference: {}", summarize(&ff_ref)).unwrap();
+    }
+
+    if let Some(osmesa) = osmesa {
+        match mode {
+            Mode::Differential => {
+                let mut cross = MaxDiff::default();
+                check_differential(&mut report, fflight, osmesa, &mut cross);
+                writeln!(summary, "  fflight vs OSMesa: {}", summarize(&cross)).unwrap();
+                let mut os_ref = MaxDiff::default();
+                let mut os_exempt = BTreeMap::new();
+                check_references(&mut report, Build::Osmesa, osmesa, true, &mut os_ref, &mut os_exempt);
+                if os_ref.compared > 0 {
+                    writeln!(summary, "  OSMesa vs reference: {}", summarize(&os_ref)).unwrap();
+                }
+                for (reason, count) in &os_exempt {
+                    writeln!(
+                        summary,
+                        "  exempted from fflight-vs-OSMesa (known OSMesa difference `{reason}`): {count} lines"
+                    )
+                    .unwrap();
+                }
+            }
+            Mode::OsmesaDiff => {
+                // Not an error either way: this output documents OSMesa.
+                let mut probe = Report::new(name);
+                let mut os_ref = MaxDiff::default();
+                let mut ignored = BTreeMap::new();
+                check_references(&mut probe, Build::Osmesa, osmesa, false, &mut os_ref, &mut ignored);
+                if probe.failures.is_empty() {
+                    report.notes.push(
+                        "note: OSMesa now agrees with the spec here; update docs/osmesa-differences.md"
+                            .into(),
+                    );
+                }
+                writeln!(summary, "  OSMesa vs reference (known to differ): {}", summarize(&os_ref))
+                    .unwrap();
+                writeln!(summary, "  fflight output:\n{}", indent(fflight)).unwrap();
+                writeln!(summary, "  OSMesa output:\n{}", indent(osmesa)).unwrap();
+            }
+            Mode::FflightOnly => {}
+        }
+    } else if mode != Mode::FflightOnly {
+        report.notes.push("note: OSMesa side skipped (FFL_NO_OSMESA=1)".into());
+    }
+
+    println!("c_tests/{name}.c ({mode:?}):\n{summary}");
+    for note in &report.notes {
+        println!("  {note}");
+    }
+    if !report.failures.is_empty() {
+        let total = report.failures.len();
+        let shown: Vec<&String> = report.failures.iter().take(MAX_FAILURES_SHOWN).collect();
+        let mut msg = format!(
+            "c_tests/{}.c: {total} mismatch(es) (outputs in target/c_tests/{}.*.txt)\n",
+            report.program, report.program
+        );
+        for f in shown {
+            writeln!(msg, "- {f}").unwrap();
+        }
+        if total > MAX_FAILURES_SHOWN {
+            writeln!(msg, "... and {} more", total - MAX_FAILURES_SHOWN).unwrap();
+        }
+        write!(msg, "{summary}").unwrap();
+        panic!("{msg}");
+    }
+}
+
+fn tail(s: &str, n: usize) -> String {
+    let lines: Vec<&str> = s.lines().collect();
+    lines[lines.len().saturating_sub(n)..].join("\n")
+}
+
+fn indent(s: &str) -> String {
+    s.lines().map(|l| format!("    {l}")).collect::<Vec<_>>().join("\n")
+}
+
+macro_rules! c_programs {
+    ($($name:ident),* $(,)?) => {
+        $(
+            #[test]
+            fn $name() {
+                run_program(stringify!($name));
+            }
+        )*
+
+        const PROGRAMS: &[&str] = &[$(stringify!($name)),*];
+    };
+}
+
+c_programs!(
+    random_lighting,
+    osmesa_diff_shininess0_attenuation,
+    osmesa_diff_zero_pow_zero,
+    system_gl_header,
+    spot_cutoff,
+    local_viewer,
+    two_sided_points,
+    color_material_modes,
+    separate_specular,
+    normalize_rescale,
+    feedback_types_points,
+    feedback_overflow,
+    errors,
+    integer_forms,
+);
+
+/// Every program in c_tests/ has a test above, and every test a program.
+#[test]
+fn every_c_program_is_run() {
+    let mut found: Vec<String> = std::fs::read_dir(manifest_dir().join("c_tests"))
+        .expect("read c_tests/")
+        .filter_map(|e| {
+            let path = e.ok()?.path();
+            if path.extension()? != "c" {
+                return None;
+            }
+            Some(path.file_stem()?.to_string_lossy().into_owned())
+        })
+        .collect();
+    found.sort();
+    let mut listed: Vec<String> = PROGRAMS.iter().map(|s| s.to_string()).collect();
+    listed.sort();
+    assert_eq!(
+        found, listed,
+        "c_tests/*.c and the c_programs! list in tests/c_programs.rs must match"
+    );
+}
+
+/// The comparison itself can fail: a changed color, a changed token, an
+/// exempt line and a reference mismatch are all caught.
+#[test]
+fn comparison_catches_differences() {
+    let base = "v 1 2 xyz 32 31.5 0.5 rgba 0.25 0.5 0.75 1 ref rgba 0.25 0.5 0.75 1\n";
+
+    let mut report = Report::new("self-test");
+    let mut stats = MaxDiff::default();
+    check_differential(&mut report, base, base, &mut stats);
+    assert!(report.failures.is_empty());
+
+    let color = base.replacen("0.5 0.75", "0.50002 0.75", 1);
+    check_differential(&mut report, &color, base, &mut stats);
+    assert_eq!(report.failures.len(), 1, "{:?}", report.failures);
+
+    // 32 vs 32.00005 is inside the coordinate tolerance, 32.001 is not.
+    let mut report = Report::new("self-test");
+    check_differential(&mut report, &base.replace(" 32 ", " 32.00005 "), base, &mut stats);
+    assert!(report.failures.is_empty(), "{:?}", report.failures);
+    check_differential(&mut report, &base.replace(" 32 ", " 32.001 "), base, &mut stats);
+    assert_eq!(report.failures.len(), 1);
+
+    let mut report = Report::new("self-test");
+    check_differential(&mut report, &base.replace("rgba", "rgb"), base, &mut stats);
+    assert!(!report.failures.is_empty());
+
+    // Exempt: the color is not compared across builds, the coordinates are.
+    let exempt = base.replace("v 1 2", "v 1 2 osmesa-exempt=shininess0");
+    let mut report = Report::new("self-test");
+    check_differential(&mut report, &exempt, &exempt.replacen("0.25", "0.9", 1), &mut stats);
+    assert!(report.failures.is_empty(), "{:?}", report.failures);
+    check_differential(&mut report, &exempt, &exempt.replacen("32", "33", 1), &mut stats);
+    assert_eq!(report.failures.len(), 1);
+
+    // Reference checks.
+    let mut exempt_counts = BTreeMap::new();
+    let mut report = Report::new("self-test");
+    let wrong = base.replacen("0.25", "0.2501", 1);
+    check_references(&mut report, Build::Fflight, &wrong, false, &mut stats, &mut exempt_counts);
+    assert_eq!(report.failures.len(), 1);
+    let wrong_exempt = exempt.replacen("0.25", "0.2501", 1);
+    check_references(&mut report, Build::Osmesa, &wrong_exempt, true, &mut stats, &mut exempt_counts);
+    assert_eq!(report.failures.len(), 1);
+    assert_eq!(exempt_counts.get("shininess0"), Some(&1));
+    check_references(&mut report, Build::Fflight, &wrong_exempt, false, &mut stats, &mut exempt_counts);
+    assert_eq!(report.failures.len(), 2);
+}
