@@ -45,12 +45,28 @@ fn is_coordinate_label(label: &str) -> bool {
     matches!(label, "xy" | "xyz" | "xyzw")
 }
 
-fn tolerance(label: &str, a: f64, b: f64) -> f64 {
+/// `line_tolerance` is the line's own `tol` value, if its reference gave one:
+/// a color that raises float rounding to a high power (shininess, spot
+/// exponent) gets the tolerance its reference computed, never less than
+/// COLOR_TOLERANCE.
+fn tolerance(label: &str, a: f64, b: f64, line_tolerance: Option<f64>) -> f64 {
     if is_coordinate_label(label) {
         coordinate_tolerance(a.abs().max(b.abs()))
     } else {
-        COLOR_TOLERANCE
+        COLOR_TOLERANCE.max(line_tolerance.unwrap_or(0.0))
     }
+}
+
+/// The label of the reference's tolerance group, not compared itself.
+const TOLERANCE_LABEL: &str = "tol";
+
+/// The `tol` value after `ref` on a line, if any.
+fn line_tolerance(tokens: &[&str]) -> Option<f64> {
+    let split = tokens.iter().position(|&t| t == "ref")?;
+    groups(&tokens[split + 1..])
+        .into_iter()
+        .find(|(label, values)| *label == TOLERANCE_LABEL && values.len() == 1)
+        .map(|(_, values)| values[0])
 }
 
 /// How long one program may run.
@@ -152,7 +168,15 @@ fn read_mode(source: &Path) -> Mode {
     }
 }
 
-const CFLAGS: &[&str] = &["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O1", "-g"];
+const CFLAGS: &[&str] = &[
+    "-std=c99",
+    "-Wall",
+    "-Wextra",
+    "-Werror",
+    "-pedantic",
+    "-O1",
+    "-g",
+];
 
 fn compile(name: &str, build: Build) -> PathBuf {
     let root = manifest_dir();
@@ -169,7 +193,9 @@ fn compile(name: &str, build: Build) -> PathBuf {
                 .args(["-lm", "-lpthread", "-ldl"]);
         }
         Build::Osmesa => {
-            cmd.arg("-DFFL_OSMESA").arg(&source).args(["-lOSMesa", "-lm"]);
+            cmd.arg("-DFFL_OSMESA")
+                .arg(&source)
+                .args(["-lOSMesa", "-lm"]);
         }
     }
     cmd.arg("-o").arg(&exe);
@@ -338,7 +364,11 @@ fn check_references(
             }
         }
         let implementation = groups(&tokens[..split]);
+        let line_tol = line_tolerance(&tokens);
         for (label, expected) in groups(&tokens[split + 1..]) {
+            if label == TOLERANCE_LABEL {
+                continue;
+            }
             let Some((_, got)) = implementation.iter().find(|(l, _)| *l == label) else {
                 report.fail(format!(
                     "{} line {}: ref group `{label}` has no counterpart\n  {line}",
@@ -359,7 +389,7 @@ fn check_references(
             }
             for (k, (&g, &e)) in got.iter().zip(&expected).enumerate() {
                 stats.record(label, g, e);
-                let tol = tolerance(label, g, e);
+                let tol = tolerance(label, g, e, line_tol);
                 if !close(g, e, tol) {
                     report.fail(format!(
                         "{} vs reference, line {}: {label}[{k}] = {g:.9} expected {e:.9} \
@@ -396,6 +426,7 @@ fn check_differential(report: &mut Report, fflight: &str, osmesa: &str, stats: &
         // On an exempt line the groups the reference covers are compared
         // with the reference only.
         let split = ta.iter().position(|&t| t == "ref");
+        let line_tol = line_tolerance(&ta);
         let exempt_labels: Vec<&str> = match (exemption(&ta), split) {
             (Some(_), Some(split)) => groups(&ta[split + 1..]).iter().map(|g| g.0).collect(),
             _ => Vec::new(),
@@ -409,7 +440,7 @@ fn check_differential(report: &mut Report, fflight: &str, osmesa: &str, stats: &
                         continue;
                     }
                     stats.record(label, u, v);
-                    let tol = tolerance(label, u, v);
+                    let tol = tolerance(label, u, v, line_tol);
                     if !close(u, v, tol) {
                         report.fail(format!(
                             "`{label}` token {k}: fflight {u:.9} OSMesa {v:.9} \
@@ -465,7 +496,11 @@ fn run_program(name: &str) {
             .collect()
     });
     for (build, out) in &results {
-        std::fs::write(out_dir().join(format!("{name}.{}.txt", build.name())), &out.stdout).ok();
+        std::fs::write(
+            out_dir().join(format!("{name}.{}.txt", build.name())),
+            &out.stdout,
+        )
+        .ok();
     }
 
     let mut report = Report::new(name);
@@ -487,7 +522,14 @@ fn run_program(name: &str) {
 
     let mut ff_ref = MaxDiff::default();
     let mut exempt = BTreeMap::new();
-    check_references(&mut report, Build::Fflight, fflight, false, &mut ff_ref, &mut exempt);
+    check_references(
+        &mut report,
+        Build::Fflight,
+        fflight,
+        false,
+        &mut ff_ref,
+        &mut exempt,
+    );
     if ff_ref.compared > 0 {
         writeln!(summary, "  fflight vs reference: {}", summarize(&ff_ref)).unwrap();
     }
@@ -500,7 +542,14 @@ fn run_program(name: &str) {
                 writeln!(summary, "  fflight vs OSMesa: {}", summarize(&cross)).unwrap();
                 let mut os_ref = MaxDiff::default();
                 let mut os_exempt = BTreeMap::new();
-                check_references(&mut report, Build::Osmesa, osmesa, true, &mut os_ref, &mut os_exempt);
+                check_references(
+                    &mut report,
+                    Build::Osmesa,
+                    osmesa,
+                    true,
+                    &mut os_ref,
+                    &mut os_exempt,
+                );
                 if os_ref.compared > 0 {
                     writeln!(summary, "  OSMesa vs reference: {}", summarize(&os_ref)).unwrap();
                 }
@@ -517,22 +566,35 @@ fn run_program(name: &str) {
                 let mut probe = Report::new(name);
                 let mut os_ref = MaxDiff::default();
                 let mut ignored = BTreeMap::new();
-                check_references(&mut probe, Build::Osmesa, osmesa, false, &mut os_ref, &mut ignored);
+                check_references(
+                    &mut probe,
+                    Build::Osmesa,
+                    osmesa,
+                    false,
+                    &mut os_ref,
+                    &mut ignored,
+                );
                 if probe.failures.is_empty() {
                     report.notes.push(
                         "note: OSMesa now agrees with the spec here; update docs/osmesa-differences.md"
                             .into(),
                     );
                 }
-                writeln!(summary, "  OSMesa vs reference (known to differ): {}", summarize(&os_ref))
-                    .unwrap();
+                writeln!(
+                    summary,
+                    "  OSMesa vs reference (known to differ): {}",
+                    summarize(&os_ref)
+                )
+                .unwrap();
                 writeln!(summary, "  fflight output:\n{}", indent(fflight)).unwrap();
                 writeln!(summary, "  OSMesa output:\n{}", indent(osmesa)).unwrap();
             }
             Mode::FflightOnly => {}
         }
     } else if mode != Mode::FflightOnly {
-        report.notes.push("note: OSMesa side skipped (FFL_NO_OSMESA=1)".into());
+        report
+            .notes
+            .push("note: OSMesa side skipped (FFL_NO_OSMESA=1)".into());
     }
 
     println!("c_tests/{name}.c ({mode:?}):\n{summary}");
@@ -563,7 +625,10 @@ fn tail(s: &str, n: usize) -> String {
 }
 
 fn indent(s: &str) -> String {
-    s.lines().map(|l| format!("    {l}")).collect::<Vec<_>>().join("\n")
+    s.lines()
+        .map(|l| format!("    {l}"))
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
 macro_rules! c_programs {
@@ -583,6 +648,7 @@ c_programs!(
     random_lighting,
     osmesa_diff_shininess0_attenuation,
     osmesa_diff_zero_pow_zero,
+    osmesa_diff_get_integer,
     system_gl_header,
     spot_cutoff,
     local_viewer,
@@ -635,9 +701,19 @@ fn comparison_catches_differences() {
 
     // 32 vs 32.00005 is inside the coordinate tolerance, 32.001 is not.
     let mut report = Report::new("self-test");
-    check_differential(&mut report, &base.replace(" 32 ", " 32.00005 "), base, &mut stats);
+    check_differential(
+        &mut report,
+        &base.replace(" 32 ", " 32.00005 "),
+        base,
+        &mut stats,
+    );
     assert!(report.failures.is_empty(), "{:?}", report.failures);
-    check_differential(&mut report, &base.replace(" 32 ", " 32.001 "), base, &mut stats);
+    check_differential(
+        &mut report,
+        &base.replace(" 32 ", " 32.001 "),
+        base,
+        &mut stats,
+    );
     assert_eq!(report.failures.len(), 1);
 
     let mut report = Report::new("self-test");
@@ -647,21 +723,84 @@ fn comparison_catches_differences() {
     // Exempt: the color is not compared across builds, the coordinates are.
     let exempt = base.replace("v 1 2", "v 1 2 osmesa-exempt=shininess0");
     let mut report = Report::new("self-test");
-    check_differential(&mut report, &exempt, &exempt.replacen("0.25", "0.9", 1), &mut stats);
+    check_differential(
+        &mut report,
+        &exempt,
+        &exempt.replacen("0.25", "0.9", 1),
+        &mut stats,
+    );
     assert!(report.failures.is_empty(), "{:?}", report.failures);
-    check_differential(&mut report, &exempt, &exempt.replacen("32", "33", 1), &mut stats);
+    check_differential(
+        &mut report,
+        &exempt,
+        &exempt.replacen("32", "33", 1),
+        &mut stats,
+    );
     assert_eq!(report.failures.len(), 1);
 
     // Reference checks.
     let mut exempt_counts = BTreeMap::new();
     let mut report = Report::new("self-test");
     let wrong = base.replacen("0.25", "0.2501", 1);
-    check_references(&mut report, Build::Fflight, &wrong, false, &mut stats, &mut exempt_counts);
+    check_references(
+        &mut report,
+        Build::Fflight,
+        &wrong,
+        false,
+        &mut stats,
+        &mut exempt_counts,
+    );
     assert_eq!(report.failures.len(), 1);
     let wrong_exempt = exempt.replacen("0.25", "0.2501", 1);
-    check_references(&mut report, Build::Osmesa, &wrong_exempt, true, &mut stats, &mut exempt_counts);
+    check_references(
+        &mut report,
+        Build::Osmesa,
+        &wrong_exempt,
+        true,
+        &mut stats,
+        &mut exempt_counts,
+    );
     assert_eq!(report.failures.len(), 1);
     assert_eq!(exempt_counts.get("shininess0"), Some(&1));
-    check_references(&mut report, Build::Fflight, &wrong_exempt, false, &mut stats, &mut exempt_counts);
+    check_references(
+        &mut report,
+        Build::Fflight,
+        &wrong_exempt,
+        false,
+        &mut stats,
+        &mut exempt_counts,
+    );
+    assert_eq!(report.failures.len(), 2);
+
+    // A line's own `tol` widens its color tolerance, never its coordinates'.
+    let with_tol = base.replace("\n", " tol 0.001\n");
+    let mut report = Report::new("self-test");
+    let off = with_tol.replacen("0.25", "0.2505", 1);
+    check_references(
+        &mut report,
+        Build::Fflight,
+        &off,
+        false,
+        &mut stats,
+        &mut exempt_counts,
+    );
+    check_differential(&mut report, &off, &with_tol, &mut stats);
+    assert!(report.failures.is_empty(), "{:?}", report.failures);
+    let far = with_tol.replacen("0.25", "0.252", 1);
+    check_references(
+        &mut report,
+        Build::Fflight,
+        &far,
+        false,
+        &mut stats,
+        &mut exempt_counts,
+    );
+    assert_eq!(report.failures.len(), 1);
+    check_differential(
+        &mut report,
+        &with_tol.replace(" 32 ", " 32.001 "),
+        &with_tol,
+        &mut stats,
+    );
     assert_eq!(report.failures.len(), 2);
 }

@@ -1,0 +1,779 @@
+//! Current vertex attributes and vertices: glColor, glNormal, glTexCoord, glEdgeFlag,
+//! glVertex in every form (§2.7). Integer colors and normals are normalized (table 2.9);
+//! vertex and texture coordinates convert directly.
+
+use glam::{Vec3, Vec4};
+
+use super::{read, with_context};
+use crate::error::GlError;
+use crate::gl::*;
+use crate::state::convert::Component;
+
+fn color(c: [f32; 4]) {
+    with_context(|ctx| {
+        ctx.color(Vec4::from_array(c));
+        Ok(())
+    })
+}
+
+fn normal(n: [f32; 3]) {
+    with_context(|ctx| {
+        ctx.normal(Vec3::from_array(n));
+        Ok(())
+    })
+}
+
+fn tex_coord(t: [f32; 4]) {
+    with_context(|ctx| {
+        ctx.tex_coord(Vec4::from_array(t));
+        Ok(())
+    })
+}
+
+fn vertex(v: [f32; 4]) {
+    with_context(|ctx| {
+        ctx.vertex(Vec4::from_array(v));
+        Ok(())
+    })
+}
+
+/// Reads `N` components at `v` into a 4-vector padded with `pad`; NULL is GL_INVALID_VALUE.
+///
+/// # Safety
+/// A non-NULL `v` must point to `N` readable values.
+unsafe fn read_vector<T: Component, const N: usize>(
+    v: *const T,
+    pad: [f32; 4],
+    convert: fn(T) -> f32,
+    command: fn([f32; 4]),
+) {
+    // SAFETY: forwarded from the caller.
+    let values = unsafe { read(v, N) };
+    if values.is_empty() {
+        with_context::<()>(|_| Err(GlError::InvalidValue));
+        return;
+    }
+    let mut out = pad;
+    for (o, &x) in out.iter_mut().zip(values) {
+        *o = convert(x);
+    }
+    command(out);
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor3b(r: GLbyte, g: GLbyte, b: GLbyte) {
+    color([r.normalized(), g.normalized(), b.normalized(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor3bv(v: *const GLbyte) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLbyte, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor3s(r: GLshort, g: GLshort, b: GLshort) {
+    color([r.normalized(), g.normalized(), b.normalized(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor3sv(v: *const GLshort) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLshort, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor3i(r: GLint, g: GLint, b: GLint) {
+    color([r.normalized(), g.normalized(), b.normalized(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor3iv(v: *const GLint) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLint, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor3f(r: GLfloat, g: GLfloat, b: GLfloat) {
+    color([r.normalized(), g.normalized(), b.normalized(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor3fv(v: *const GLfloat) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLfloat, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor3d(r: GLdouble, g: GLdouble, b: GLdouble) {
+    color([r.normalized(), g.normalized(), b.normalized(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor3dv(v: *const GLdouble) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLdouble, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor3ub(r: GLubyte, g: GLubyte, b: GLubyte) {
+    color([r.normalized(), g.normalized(), b.normalized(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor3ubv(v: *const GLubyte) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLubyte, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor3us(r: GLushort, g: GLushort, b: GLushort) {
+    color([r.normalized(), g.normalized(), b.normalized(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor3usv(v: *const GLushort) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLushort, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor3ui(r: GLuint, g: GLuint, b: GLuint) {
+    color([r.normalized(), g.normalized(), b.normalized(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor3uiv(v: *const GLuint) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLuint, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor4b(r: GLbyte, g: GLbyte, b: GLbyte, a: GLbyte) {
+    color([
+        r.normalized(),
+        g.normalized(),
+        b.normalized(),
+        a.normalized(),
+    ])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor4bv(v: *const GLbyte) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLbyte, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor4s(r: GLshort, g: GLshort, b: GLshort, a: GLshort) {
+    color([
+        r.normalized(),
+        g.normalized(),
+        b.normalized(),
+        a.normalized(),
+    ])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor4sv(v: *const GLshort) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLshort, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor4i(r: GLint, g: GLint, b: GLint, a: GLint) {
+    color([
+        r.normalized(),
+        g.normalized(),
+        b.normalized(),
+        a.normalized(),
+    ])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor4iv(v: *const GLint) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLint, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor4f(r: GLfloat, g: GLfloat, b: GLfloat, a: GLfloat) {
+    color([
+        r.normalized(),
+        g.normalized(),
+        b.normalized(),
+        a.normalized(),
+    ])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor4fv(v: *const GLfloat) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLfloat, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor4d(r: GLdouble, g: GLdouble, b: GLdouble, a: GLdouble) {
+    color([
+        r.normalized(),
+        g.normalized(),
+        b.normalized(),
+        a.normalized(),
+    ])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor4dv(v: *const GLdouble) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLdouble, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor4ub(r: GLubyte, g: GLubyte, b: GLubyte, a: GLubyte) {
+    color([
+        r.normalized(),
+        g.normalized(),
+        b.normalized(),
+        a.normalized(),
+    ])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor4ubv(v: *const GLubyte) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLubyte, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor4us(r: GLushort, g: GLushort, b: GLushort, a: GLushort) {
+    color([
+        r.normalized(),
+        g.normalized(),
+        b.normalized(),
+        a.normalized(),
+    ])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor4usv(v: *const GLushort) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLushort, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor4ui(r: GLuint, g: GLuint, b: GLuint, a: GLuint) {
+    color([
+        r.normalized(),
+        g.normalized(),
+        b.normalized(),
+        a.normalized(),
+    ])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColor4uiv(v: *const GLuint) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLuint, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::normalized, color) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glNormal3b(nx: GLbyte, ny: GLbyte, nz: GLbyte) {
+    normal([nx.normalized(), ny.normalized(), nz.normalized()])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glNormal3bv(v: *const GLbyte) {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        read_vector::<GLbyte, 3>(v, [0.0; 4], Component::normalized, |n| {
+            normal([n[0], n[1], n[2]])
+        })
+    }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glNormal3s(nx: GLshort, ny: GLshort, nz: GLshort) {
+    normal([nx.normalized(), ny.normalized(), nz.normalized()])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glNormal3sv(v: *const GLshort) {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        read_vector::<GLshort, 3>(v, [0.0; 4], Component::normalized, |n| {
+            normal([n[0], n[1], n[2]])
+        })
+    }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glNormal3i(nx: GLint, ny: GLint, nz: GLint) {
+    normal([nx.normalized(), ny.normalized(), nz.normalized()])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glNormal3iv(v: *const GLint) {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        read_vector::<GLint, 3>(v, [0.0; 4], Component::normalized, |n| {
+            normal([n[0], n[1], n[2]])
+        })
+    }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glNormal3f(nx: GLfloat, ny: GLfloat, nz: GLfloat) {
+    normal([nx.normalized(), ny.normalized(), nz.normalized()])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glNormal3fv(v: *const GLfloat) {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        read_vector::<GLfloat, 3>(v, [0.0; 4], Component::normalized, |n| {
+            normal([n[0], n[1], n[2]])
+        })
+    }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glNormal3d(nx: GLdouble, ny: GLdouble, nz: GLdouble) {
+    normal([nx.normalized(), ny.normalized(), nz.normalized()])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glNormal3dv(v: *const GLdouble) {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        read_vector::<GLdouble, 3>(v, [0.0; 4], Component::normalized, |n| {
+            normal([n[0], n[1], n[2]])
+        })
+    }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord1s(s: GLshort) {
+    tex_coord([s.direct(), 0.0, 0.0, 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord1sv(v: *const GLshort) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLshort, 1>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord1i(s: GLint) {
+    tex_coord([s.direct(), 0.0, 0.0, 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord1iv(v: *const GLint) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLint, 1>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord1f(s: GLfloat) {
+    tex_coord([s.direct(), 0.0, 0.0, 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord1fv(v: *const GLfloat) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLfloat, 1>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord1d(s: GLdouble) {
+    tex_coord([s.direct(), 0.0, 0.0, 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord1dv(v: *const GLdouble) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLdouble, 1>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord2s(s: GLshort, t: GLshort) {
+    tex_coord([s.direct(), t.direct(), 0.0, 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord2sv(v: *const GLshort) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLshort, 2>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord2i(s: GLint, t: GLint) {
+    tex_coord([s.direct(), t.direct(), 0.0, 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord2iv(v: *const GLint) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLint, 2>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord2f(s: GLfloat, t: GLfloat) {
+    tex_coord([s.direct(), t.direct(), 0.0, 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord2fv(v: *const GLfloat) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLfloat, 2>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord2d(s: GLdouble, t: GLdouble) {
+    tex_coord([s.direct(), t.direct(), 0.0, 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord2dv(v: *const GLdouble) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLdouble, 2>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord3s(s: GLshort, t: GLshort, r: GLshort) {
+    tex_coord([s.direct(), t.direct(), r.direct(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord3sv(v: *const GLshort) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLshort, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord3i(s: GLint, t: GLint, r: GLint) {
+    tex_coord([s.direct(), t.direct(), r.direct(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord3iv(v: *const GLint) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLint, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord3f(s: GLfloat, t: GLfloat, r: GLfloat) {
+    tex_coord([s.direct(), t.direct(), r.direct(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord3fv(v: *const GLfloat) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLfloat, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord3d(s: GLdouble, t: GLdouble, r: GLdouble) {
+    tex_coord([s.direct(), t.direct(), r.direct(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord3dv(v: *const GLdouble) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLdouble, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord4s(s: GLshort, t: GLshort, r: GLshort, q: GLshort) {
+    tex_coord([s.direct(), t.direct(), r.direct(), q.direct()])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord4sv(v: *const GLshort) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLshort, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord4i(s: GLint, t: GLint, r: GLint, q: GLint) {
+    tex_coord([s.direct(), t.direct(), r.direct(), q.direct()])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord4iv(v: *const GLint) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLint, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord4f(s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) {
+    tex_coord([s.direct(), t.direct(), r.direct(), q.direct()])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord4fv(v: *const GLfloat) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLfloat, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoord4d(s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble) {
+    tex_coord([s.direct(), t.direct(), r.direct(), q.direct()])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexCoord4dv(v: *const GLdouble) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLdouble, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, tex_coord) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glVertex2s(x: GLshort, y: GLshort) {
+    vertex([x.direct(), y.direct(), 0.0, 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glVertex2sv(v: *const GLshort) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLshort, 2>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, vertex) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glVertex2i(x: GLint, y: GLint) {
+    vertex([x.direct(), y.direct(), 0.0, 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glVertex2iv(v: *const GLint) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLint, 2>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, vertex) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glVertex2f(x: GLfloat, y: GLfloat) {
+    vertex([x.direct(), y.direct(), 0.0, 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glVertex2fv(v: *const GLfloat) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLfloat, 2>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, vertex) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glVertex2d(x: GLdouble, y: GLdouble) {
+    vertex([x.direct(), y.direct(), 0.0, 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glVertex2dv(v: *const GLdouble) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLdouble, 2>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, vertex) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glVertex3s(x: GLshort, y: GLshort, z: GLshort) {
+    vertex([x.direct(), y.direct(), z.direct(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glVertex3sv(v: *const GLshort) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLshort, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, vertex) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glVertex3i(x: GLint, y: GLint, z: GLint) {
+    vertex([x.direct(), y.direct(), z.direct(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glVertex3iv(v: *const GLint) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLint, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, vertex) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glVertex3f(x: GLfloat, y: GLfloat, z: GLfloat) {
+    vertex([x.direct(), y.direct(), z.direct(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glVertex3fv(v: *const GLfloat) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLfloat, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, vertex) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glVertex3d(x: GLdouble, y: GLdouble, z: GLdouble) {
+    vertex([x.direct(), y.direct(), z.direct(), 1.0])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glVertex3dv(v: *const GLdouble) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLdouble, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, vertex) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glVertex4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) {
+    vertex([x.direct(), y.direct(), z.direct(), w.direct()])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glVertex4sv(v: *const GLshort) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLshort, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, vertex) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glVertex4i(x: GLint, y: GLint, z: GLint, w: GLint) {
+    vertex([x.direct(), y.direct(), z.direct(), w.direct()])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glVertex4iv(v: *const GLint) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLint, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, vertex) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glVertex4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) {
+    vertex([x.direct(), y.direct(), z.direct(), w.direct()])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glVertex4fv(v: *const GLfloat) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLfloat, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, vertex) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glVertex4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) {
+    vertex([x.direct(), y.direct(), z.direct(), w.direct()])
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glVertex4dv(v: *const GLdouble) {
+    // SAFETY: forwarded from the caller.
+    unsafe { read_vector::<GLdouble, 4>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, vertex) }
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEdgeFlag(flag: GLboolean) {
+    with_context(|ctx| {
+        ctx.edge_flag(flag != 0);
+        Ok(())
+    })
+}
+
+/// # Safety
+/// `flag` is NULL or points to one GLboolean.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glEdgeFlagv(flag: *const GLboolean) {
+    // SAFETY: forwarded from the caller.
+    let values = unsafe { read(flag, 1) };
+    with_context(|ctx| {
+        let flag = values.first().ok_or(GlError::InvalidValue)?;
+        ctx.edge_flag(*flag != 0);
+        Ok(())
+    })
+}

@@ -1,0 +1,60 @@
+//! The C ABI: every exported GL entry point. The only `unsafe` code of the crate.
+//!
+//! Each entry point decodes its pointers into slices and runs one `Context` method through
+//! [`with_context`], which finds the current context, records the GL error and keeps Rust
+//! panics from crossing into C.
+#![allow(unsafe_code)]
+
+mod attribs;
+mod context;
+mod feedback;
+mod lighting;
+mod matrix;
+mod query;
+
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use crate::context::Context;
+use crate::current;
+use crate::error::GlResult;
+
+/// The guard around every entry point: runs `command` on the current context, records its
+/// error, and returns `R::default()` on an error, a panic, or when no context can be had.
+pub(crate) fn with_context<R: Default>(command: impl FnOnce(&mut Context) -> GlResult<R>) -> R {
+    catch_unwind(AssertUnwindSafe(|| {
+        current::with_current(|ctx| {
+            let result = command(ctx);
+            ctx.settle(result)
+        })
+    }))
+    .ok()
+    .flatten()
+    .unwrap_or_default()
+}
+
+/// `count` values at `ptr`, or an empty slice for NULL (the command then reports
+/// GL_INVALID_VALUE when it needs values).
+///
+/// # Safety
+/// A non-NULL `ptr` must point to at least `count` readable values.
+pub(crate) unsafe fn read<'a, T>(ptr: *const T, count: usize) -> &'a [T] {
+    if ptr.is_null() {
+        &[]
+    } else {
+        // SAFETY: the caller guarantees `count` readable values at a non-NULL `ptr`.
+        unsafe { std::slice::from_raw_parts(ptr, count) }
+    }
+}
+
+/// Writes `values` to `ptr` unless it is NULL; a NULL destination is GL_INVALID_VALUE.
+///
+/// # Safety
+/// A non-NULL `ptr` must have room for `values.len()` values.
+pub(crate) unsafe fn write<T: Copy>(ptr: *mut T, values: &[T]) -> GlResult {
+    if ptr.is_null() {
+        return Err(crate::error::GlError::InvalidValue);
+    }
+    // SAFETY: the caller guarantees room for `values.len()` values at a non-NULL `ptr`.
+    unsafe { std::ptr::copy_nonoverlapping(values.as_ptr(), ptr, values.len()) };
+    Ok(())
+}

@@ -1,0 +1,92 @@
+//! Viewport, depth range, glFeedbackBuffer, glRenderMode and glPassThrough (§2.11.1, §5.3).
+
+use crate::context::{Context, RenderMode};
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+use crate::pipeline::feedback::FeedbackLayout;
+use crate::state::raster::MAX_VIEWPORT_DIMS;
+
+/// What glRenderMode hands the C layer when feedback ends: the values to write to the
+/// address glFeedbackBuffer was given.
+#[derive(Debug, Default, PartialEq)]
+pub struct FinishedFeedback {
+    pub address: usize,
+    pub values: Vec<f32>,
+}
+
+impl Context {
+    /// glViewport: width and height are clamped to GL_MAX_VIEWPORT_DIMS.
+    pub fn viewport(&mut self, x: i32, y: i32, width: i32, height: i32) -> GlResult {
+        self.outside_begin_end()?;
+        if width < 0 || height < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        self.raster.viewport = [
+            x,
+            y,
+            width.min(MAX_VIEWPORT_DIMS),
+            height.min(MAX_VIEWPORT_DIMS),
+        ];
+        Ok(())
+    }
+
+    /// glDepthRange: both values are clamped to [0, 1].
+    pub fn depth_range(&mut self, near: f64, far: f64) -> GlResult {
+        self.outside_begin_end()?;
+        self.raster.depth_range = [near.clamp(0.0, 1.0), far.clamp(0.0, 1.0)];
+        Ok(())
+    }
+
+    /// glFeedbackBuffer: `address` is where the C layer will write the values; a NULL address
+    /// with a positive size is GL_INVALID_VALUE.
+    pub fn feedback_buffer(&mut self, size: i32, kind: GLenum, address: usize) -> GlResult {
+        self.outside_begin_end()?;
+        if self.render_mode == RenderMode::Feedback {
+            return Err(GlError::InvalidOperation);
+        }
+        if size < 0 || (address == 0 && size > 0) {
+            return Err(GlError::InvalidValue);
+        }
+        let layout = FeedbackLayout::of(kind)?;
+        self.feedback.layout = Some(layout);
+        self.feedback.capacity = size as usize;
+        self.feedback.restart();
+        self.feedback_address = address;
+        Ok(())
+    }
+
+    /// glRenderMode: returns the value count of the feedback that ends (-1 if it overflowed)
+    /// and the values for the C layer to write, or 0 when leaving GL_RENDER.
+    pub fn render_mode(&mut self, mode: GLenum) -> GlResult<(i32, Option<FinishedFeedback>)> {
+        self.outside_begin_end()?;
+        let new_mode = match mode {
+            GL_RENDER => RenderMode::Render,
+            GL_FEEDBACK => RenderMode::Feedback,
+            _ => return Err(GlError::InvalidEnum),
+        };
+        if new_mode == RenderMode::Feedback && self.feedback.layout.is_none() {
+            return Err(GlError::InvalidOperation);
+        }
+        let finished = match self.render_mode {
+            RenderMode::Render => (0, None),
+            RenderMode::Feedback => {
+                let count = self.feedback.result();
+                let values = std::mem::take(&mut self.feedback.values);
+                self.feedback.restart();
+                let address = self.feedback_address;
+                (count, Some(FinishedFeedback { address, values }))
+            }
+        };
+        self.render_mode = new_mode;
+        Ok(finished)
+    }
+
+    /// glPassThrough: a GL_PASS_THROUGH_TOKEN in feedback mode, nothing otherwise.
+    pub fn pass_through(&mut self, value: f32) -> GlResult {
+        self.outside_begin_end()?;
+        if self.render_mode == RenderMode::Feedback {
+            self.feedback.pass_through(value);
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,252 @@
+//! glLight, glMaterial, glLightModel, glColorMaterial and glEnable (§2.14).
+
+use glam::Vec4;
+
+use crate::context::Context;
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+use crate::state::convert::{color_to_int, float_to_int, int_to_color};
+use crate::state::enables::Capability;
+use crate::state::light::{is_light_color, light_index, light_param_count, light_params_from_ints};
+use crate::state::light_model::light_model_param_count;
+use crate::state::material::{
+    BACK, FRONT, MaterialMask, faces, is_material_color, material_param_count,
+};
+
+/// The first `count` values of `params` as a padded Vec4, or GL_INVALID_VALUE if too few
+/// (a NULL pointer reaches here as an empty slice).
+pub(crate) fn take_params(params: &[f32], count: usize) -> GlResult<Vec4> {
+    if params.len() < count {
+        return Err(GlError::InvalidValue);
+    }
+    let mut values = [0.0; 4];
+    values[..count].copy_from_slice(&params[..count]);
+    Ok(Vec4::from_array(values))
+}
+
+/// Integer params as floats: colors by the signed linear mapping, others directly.
+fn ints_to_floats(params: &[i32], count: usize, is_color: bool) -> GlResult<Vec4> {
+    if params.len() < count {
+        return Err(GlError::InvalidValue);
+    }
+    let mut values = [0.0; 4];
+    for (value, &param) in values.iter_mut().zip(&params[..count]) {
+        *value = if is_color {
+            int_to_color(param)
+        } else {
+            param as f32
+        };
+    }
+    Ok(Vec4::from_array(values))
+}
+
+/// Values of a glGet*iv: colors by the linear mapping, other float state rounded.
+pub(crate) fn floats_to_ints(values: Vec4, is_color: bool) -> [i32; 4] {
+    values.to_array().map(|v| {
+        if is_color {
+            color_to_int(v)
+        } else {
+            float_to_int(v)
+        }
+    })
+}
+
+/// Whether a pname names a single value: the only ones the scalar forms (glLightf ...) accept.
+fn require_scalar(count: usize) -> GlResult {
+    if count == 1 {
+        Ok(())
+    } else {
+        Err(GlError::InvalidEnum)
+    }
+}
+
+impl Context {
+    /// glLightfv (§2.14.1): positions and spot directions go through the current modelview.
+    pub fn light(&mut self, light: GLenum, pname: GLenum, params: &[f32]) -> GlResult {
+        self.outside_begin_end()?;
+        let index = light_index(light)?;
+        let count = light_param_count(pname).ok_or(GlError::InvalidEnum)?;
+        let values = take_params(params, count)?;
+        self.store_light(index, pname, values)
+    }
+
+    /// glLightiv: colors map linearly from the signed integer range, the rest converts directly.
+    pub fn light_i(&mut self, light: GLenum, pname: GLenum, params: &[i32]) -> GlResult {
+        self.outside_begin_end()?;
+        let index = light_index(light)?;
+        let count = light_param_count(pname).ok_or(GlError::InvalidEnum)?;
+        if params.len() < count {
+            return Err(GlError::InvalidValue);
+        }
+        self.store_light(
+            index,
+            pname,
+            light_params_from_ints(pname, &params[..count]),
+        )
+    }
+
+    /// glLightf / glLighti: single-valued parameters only.
+    pub fn light_scalar(&mut self, light: GLenum, pname: GLenum, param: f32) -> GlResult {
+        self.outside_begin_end()?;
+        let index = light_index(light)?;
+        require_scalar(light_param_count(pname).ok_or(GlError::InvalidEnum)?)?;
+        self.store_light(index, pname, Vec4::new(param, 0.0, 0.0, 0.0))
+    }
+
+    fn store_light(&mut self, index: usize, pname: GLenum, values: Vec4) -> GlResult {
+        let modelview = *self.matrices.modelview.top();
+        self.lights[index].set(pname, values, &modelview)?;
+        self.invalidate();
+        Ok(())
+    }
+
+    /// glGetLightfv: the values and how many of them the pname defines.
+    pub fn get_light(&self, light: GLenum, pname: GLenum) -> GlResult<(Vec4, usize)> {
+        self.outside_begin_end()?;
+        let index = light_index(light)?;
+        let count = light_param_count(pname).ok_or(GlError::InvalidEnum)?;
+        Ok((self.lights[index].get(pname)?, count))
+    }
+
+    /// glGetLightiv.
+    pub fn get_light_i(&self, light: GLenum, pname: GLenum) -> GlResult<([i32; 4], usize)> {
+        let (values, count) = self.get_light(light, pname)?;
+        Ok((floats_to_ints(values, is_light_color(pname)), count))
+    }
+
+    /// glMaterialfv (§2.14.1), legal between glBegin and glEnd. Properties that an enabled
+    /// color material tracks are left alone, as Mesa does.
+    pub fn material(&mut self, face: GLenum, pname: GLenum, params: &[f32]) -> GlResult {
+        let faces = faces(face)?;
+        let count = material_param_count(pname).ok_or(GlError::InvalidEnum)?;
+        let values = take_params(params, count)?;
+        self.store_material(faces, pname, values)
+    }
+
+    /// glMaterialiv.
+    pub fn material_i(&mut self, face: GLenum, pname: GLenum, params: &[i32]) -> GlResult {
+        let faces = faces(face)?;
+        let count = material_param_count(pname).ok_or(GlError::InvalidEnum)?;
+        let values = ints_to_floats(params, count, is_material_color(pname))?;
+        self.store_material(faces, pname, values)
+    }
+
+    /// glMaterialf / glMateriali: GL_SHININESS only.
+    pub fn material_scalar(&mut self, face: GLenum, pname: GLenum, param: f32) -> GlResult {
+        let faces = faces(face)?;
+        require_scalar(material_param_count(pname).ok_or(GlError::InvalidEnum)?)?;
+        self.store_material(faces, pname, Vec4::new(param, 0.0, 0.0, 0.0))
+    }
+
+    fn store_material(&mut self, faces: [bool; 2], pname: GLenum, values: Vec4) -> GlResult {
+        let mask = MaterialMask::of_pname(pname)?;
+        if pname == GL_SHININESS && !(0.0..=128.0).contains(&values.x) {
+            return Err(GlError::InvalidValue);
+        }
+        let tracked = self.color_material.tracked();
+        for face in [FRONT, BACK] {
+            if faces[face] {
+                self.materials[face].set(mask.without(tracked[face]), values);
+            }
+        }
+        self.invalidate();
+        Ok(())
+    }
+
+    /// glGetMaterialfv: GL_FRONT or GL_BACK only.
+    pub fn get_material(&self, face: GLenum, pname: GLenum) -> GlResult<(Vec4, usize)> {
+        self.outside_begin_end()?;
+        let face = match face {
+            GL_FRONT => FRONT,
+            GL_BACK => BACK,
+            _ => return Err(GlError::InvalidEnum),
+        };
+        if pname == GL_AMBIENT_AND_DIFFUSE {
+            return Err(GlError::InvalidEnum);
+        }
+        let count = material_param_count(pname).ok_or(GlError::InvalidEnum)?;
+        Ok((self.materials[face].get(pname)?, count))
+    }
+
+    /// glGetMaterialiv.
+    pub fn get_material_i(&self, face: GLenum, pname: GLenum) -> GlResult<([i32; 4], usize)> {
+        let (values, count) = self.get_material(face, pname)?;
+        Ok((floats_to_ints(values, is_material_color(pname)), count))
+    }
+
+    /// glLightModelfv.
+    pub fn light_model(&mut self, pname: GLenum, params: &[f32]) -> GlResult {
+        self.outside_begin_end()?;
+        let count = light_model_param_count(pname).ok_or(GlError::InvalidEnum)?;
+        let values = take_params(params, count)?;
+        self.store_light_model(pname, values)
+    }
+
+    /// glLightModeliv: the ambient color maps linearly, the rest converts directly.
+    pub fn light_model_i(&mut self, pname: GLenum, params: &[i32]) -> GlResult {
+        self.outside_begin_end()?;
+        let count = light_model_param_count(pname).ok_or(GlError::InvalidEnum)?;
+        let values = ints_to_floats(params, count, pname == GL_LIGHT_MODEL_AMBIENT)?;
+        self.store_light_model(pname, values)
+    }
+
+    /// glLightModelf / glLightModeli: single-valued parameters only.
+    pub fn light_model_scalar(&mut self, pname: GLenum, param: f32) -> GlResult {
+        self.outside_begin_end()?;
+        require_scalar(light_model_param_count(pname).ok_or(GlError::InvalidEnum)?)?;
+        self.store_light_model(pname, Vec4::new(param, 0.0, 0.0, 0.0))
+    }
+
+    fn store_light_model(&mut self, pname: GLenum, values: Vec4) -> GlResult {
+        self.light_model.set(pname, values)?;
+        self.invalidate();
+        Ok(())
+    }
+
+    /// glColorMaterial (§2.14.3).
+    pub fn color_material(&mut self, face: GLenum, mode: GLenum) -> GlResult {
+        self.outside_begin_end()?;
+        faces(face)?;
+        MaterialMask::of_color_material_mode(mode)?;
+        self.color_material.face = face;
+        self.color_material.mode = mode;
+        self.apply_color_material();
+        self.invalidate();
+        Ok(())
+    }
+
+    /// glEnable / glDisable.
+    pub fn set_capability(&mut self, cap: GLenum, enabled: bool) -> GlResult {
+        self.outside_begin_end()?;
+        match Capability::of(cap)? {
+            Capability::Lighting => self.enables.lighting = enabled,
+            Capability::Light(i) => self.lights[i].enabled = enabled,
+            Capability::Normalize => self.enables.normalize = enabled,
+            Capability::RescaleNormal => self.enables.rescale_normal = enabled,
+            Capability::ColorMaterial => {
+                self.color_material.enabled = enabled;
+                self.apply_color_material();
+            }
+            Capability::CullFace => self.enables.cull_face = enabled,
+            Capability::ClipPlane(i) => self.enables.clip_planes[i] = enabled,
+            Capability::Other(cap) => self.enables.set_other(cap, enabled),
+        }
+        self.invalidate();
+        Ok(())
+    }
+
+    /// glIsEnabled.
+    pub fn is_enabled(&self, cap: GLenum) -> GlResult<bool> {
+        self.outside_begin_end()?;
+        Ok(match Capability::of(cap)? {
+            Capability::Lighting => self.enables.lighting,
+            Capability::Light(i) => self.lights[i].enabled,
+            Capability::Normalize => self.enables.normalize,
+            Capability::RescaleNormal => self.enables.rescale_normal,
+            Capability::ColorMaterial => self.color_material.enabled,
+            Capability::CullFace => self.enables.cull_face,
+            Capability::ClipPlane(i) => self.enables.clip_planes[i],
+            Capability::Other(cap) => self.enables.other(cap),
+        })
+    }
+}

@@ -1,0 +1,7 @@
+//! Every GL command as a method on `Context`, grouped like the specification.
+
+pub mod feedback;
+pub mod lighting;
+pub mod matrix;
+pub mod query;
+pub mod vertex;

@@ -1,0 +1,153 @@
+//! State queries (§6.1): glGet{Boolean,Integer,Float,Double}v and glGetString.
+
+use std::ffi::CStr;
+
+use crate::context::{Context, RenderMode};
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+use crate::state::convert::{color_to_int, float_to_int};
+use crate::state::enables::{Capability, MAX_CLIP_PLANES};
+use crate::state::light::MAX_LIGHTS;
+use crate::state::raster::MAX_VIEWPORT_DIMS;
+
+/// The largest index count and vertex range glDrawRangeElements is tuned for.
+pub const MAX_ELEMENTS: i32 = 3000;
+
+/// A queried state value in its own type; §6.1.2 converts it to the type asked for.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StateValue {
+    Bools(Vec<bool>),
+    Ints(Vec<i32>),
+    Floats(Vec<f64>),
+    /// Colors, normals and the depth range: mapped linearly to integers when asked as such.
+    Normalized(Vec<f64>),
+}
+
+impl StateValue {
+    pub fn as_doubles(&self) -> Vec<f64> {
+        match self {
+            StateValue::Bools(v) => v.iter().map(|&b| b as u8 as f64).collect(),
+            StateValue::Ints(v) => v.iter().map(|&i| i as f64).collect(),
+            StateValue::Floats(v) | StateValue::Normalized(v) => v.clone(),
+        }
+    }
+
+    pub fn as_floats(&self) -> Vec<f32> {
+        self.as_doubles().into_iter().map(|v| v as f32).collect()
+    }
+
+    pub fn as_ints(&self) -> Vec<i32> {
+        match self {
+            StateValue::Bools(v) => v.iter().map(|&b| b as i32).collect(),
+            StateValue::Ints(v) => v.clone(),
+            StateValue::Floats(v) => v.iter().map(|&f| float_to_int(f as f32)).collect(),
+            StateValue::Normalized(v) => v.iter().map(|&f| color_to_int(f as f32)).collect(),
+        }
+    }
+
+    pub fn as_bools(&self) -> Vec<bool> {
+        match self {
+            StateValue::Bools(v) => v.clone(),
+            StateValue::Ints(v) => v.iter().map(|&i| i != 0).collect(),
+            StateValue::Floats(v) | StateValue::Normalized(v) => {
+                v.iter().map(|&f| f != 0.0).collect()
+            }
+        }
+    }
+}
+
+fn floats(values: &[f32]) -> StateValue {
+    StateValue::Floats(values.iter().map(|&v| v as f64).collect())
+}
+
+fn normalized(values: &[f32]) -> StateValue {
+    StateValue::Normalized(values.iter().map(|&v| v as f64).collect())
+}
+
+fn int(value: i32) -> StateValue {
+    StateValue::Ints(vec![value])
+}
+
+fn enumeration(value: GLenum) -> StateValue {
+    StateValue::Ints(vec![value as i32])
+}
+
+impl Context {
+    /// The value of `pname` for glGet*v.
+    pub fn get(&self, pname: GLenum) -> GlResult<StateValue> {
+        self.outside_begin_end()?;
+        if Capability::of(pname).is_ok() {
+            return Ok(StateValue::Bools(vec![self.is_enabled(pname)?]));
+        }
+        let m = &self.matrices;
+        Ok(match pname {
+            GL_MAX_LIGHTS => int(MAX_LIGHTS as i32),
+            GL_MAX_CLIP_PLANES => int(MAX_CLIP_PLANES as i32),
+            GL_MAX_VIEWPORT_DIMS => StateValue::Ints(vec![MAX_VIEWPORT_DIMS; 2]),
+            GL_MAX_MODELVIEW_STACK_DEPTH => int(m.modelview.max_depth() as i32),
+            GL_MAX_PROJECTION_STACK_DEPTH => int(m.projection.max_depth() as i32),
+            GL_MAX_TEXTURE_STACK_DEPTH => int(m.texture.max_depth() as i32),
+            GL_MAX_ELEMENTS_VERTICES | GL_MAX_ELEMENTS_INDICES => int(MAX_ELEMENTS),
+            GL_CURRENT_COLOR => normalized(&self.current.color.to_array()),
+            GL_CURRENT_NORMAL => normalized(&self.current.normal.to_array()),
+            GL_CURRENT_TEXTURE_COORDS => floats(&self.current.tex_coord.to_array()),
+            GL_EDGE_FLAG => StateValue::Bools(vec![self.current.edge_flag]),
+            GL_LIGHT_MODEL_AMBIENT => normalized(&self.light_model.ambient.to_array()),
+            GL_LIGHT_MODEL_LOCAL_VIEWER => StateValue::Bools(vec![self.light_model.local_viewer]),
+            GL_LIGHT_MODEL_TWO_SIDE => StateValue::Bools(vec![self.light_model.two_side]),
+            GL_LIGHT_MODEL_COLOR_CONTROL => enumeration(self.light_model.color_control),
+            GL_COLOR_MATERIAL_FACE => enumeration(self.color_material.face),
+            GL_COLOR_MATERIAL_PARAMETER => enumeration(self.color_material.mode),
+            GL_MATRIX_MODE => enumeration(m.mode),
+            GL_MODELVIEW_MATRIX | GL_PROJECTION_MATRIX | GL_TEXTURE_MATRIX => {
+                floats(&m.stack(matrix_of(pname)).top().to_cols_array())
+            }
+            GL_TRANSPOSE_MODELVIEW_MATRIX
+            | GL_TRANSPOSE_PROJECTION_MATRIX
+            | GL_TRANSPOSE_TEXTURE_MATRIX => {
+                floats(&m.stack(matrix_of(pname)).top().transpose().to_cols_array())
+            }
+            GL_MODELVIEW_STACK_DEPTH => int(m.modelview.depth() as i32),
+            GL_PROJECTION_STACK_DEPTH => int(m.projection.depth() as i32),
+            GL_TEXTURE_STACK_DEPTH => int(m.texture.depth() as i32),
+            GL_VIEWPORT => StateValue::Ints(self.raster.viewport.to_vec()),
+            GL_DEPTH_RANGE => StateValue::Normalized(self.raster.depth_range.to_vec()),
+            GL_SHADE_MODEL => enumeration(self.raster.shade_model),
+            GL_FRONT_FACE => enumeration(self.raster.front_face),
+            GL_CULL_FACE_MODE => enumeration(self.raster.cull_face_mode),
+            GL_POLYGON_MODE => {
+                StateValue::Ints(self.raster.polygon_mode.iter().map(|&m| m as i32).collect())
+            }
+            GL_RENDER_MODE => enumeration(match self.render_mode {
+                RenderMode::Render => GL_RENDER,
+                RenderMode::Feedback => GL_FEEDBACK,
+            }),
+            GL_FEEDBACK_BUFFER_SIZE => int(self.feedback.capacity as i32),
+            GL_FEEDBACK_BUFFER_TYPE => {
+                enumeration(self.feedback.layout.map_or(GL_2D, |layout| layout.kind))
+            }
+            _ => return Err(GlError::InvalidEnum),
+        })
+    }
+
+    /// glGetString.
+    pub fn get_string(&self, name: GLenum) -> GlResult<&'static CStr> {
+        self.outside_begin_end()?;
+        Ok(match name {
+            GL_VENDOR => c"fflight",
+            GL_RENDERER => c"fflight fixed-function pipeline",
+            GL_VERSION => c"1.5 fflight",
+            GL_EXTENSIONS => c"",
+            _ => return Err(GlError::InvalidEnum),
+        })
+    }
+}
+
+/// The matrix mode a matrix query names.
+fn matrix_of(pname: GLenum) -> GLenum {
+    match pname {
+        GL_PROJECTION_MATRIX | GL_TRANSPOSE_PROJECTION_MATRIX => GL_PROJECTION,
+        GL_TEXTURE_MATRIX | GL_TRANSPOSE_TEXTURE_MATRIX => GL_TEXTURE,
+        _ => GL_MODELVIEW,
+    }
+}

@@ -1,0 +1,151 @@
+//! The GL context: all state of one rendering context, and the per-thread current context.
+
+use glam::Vec4;
+
+use crate::error::{ErrorFlag, GlError, GlResult};
+use crate::gl::*;
+use crate::lighting::PreparedLighting;
+use crate::pipeline::feedback::FeedbackBuffer;
+use crate::pipeline::vertex::{CurrentAttribs, DerivedState, ProcessedVertex, VertexTransform};
+use crate::state::enables::Enables;
+use crate::state::light::{Light, MAX_LIGHTS};
+use crate::state::light_model::LightModel;
+use crate::state::material::{ColorMaterial, Material};
+use crate::state::matrix::Matrices;
+use crate::state::raster::RasterState;
+
+/// glRenderMode's modes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RenderMode {
+    Render,
+    Feedback,
+}
+
+/// The primitive being specified between glBegin and glEnd.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PrimitiveInProgress {
+    pub mode: GLenum,
+    pub vertices: Vec<ProcessedVertex>,
+}
+
+/// One GL context. Every GL command is a method; state changes that affect vertex processing
+/// drop the cached `DerivedState`, which the next vertex rebuilds.
+#[derive(Clone, Debug)]
+pub struct Context {
+    pub(crate) error: ErrorFlag,
+    pub(crate) lights: [Light; MAX_LIGHTS],
+    pub(crate) materials: [Material; 2],
+    pub(crate) light_model: LightModel,
+    pub(crate) color_material: ColorMaterial,
+    pub(crate) enables: Enables,
+    pub(crate) current: CurrentAttribs,
+    pub(crate) matrices: Matrices,
+    pub(crate) raster: RasterState,
+    pub(crate) render_mode: RenderMode,
+    pub(crate) feedback: FeedbackBuffer,
+    /// The address glFeedbackBuffer was given: only the C layer writes through it.
+    pub(crate) feedback_address: usize,
+    pub(crate) primitive: Option<PrimitiveInProgress>,
+    derived: Option<DerivedState>,
+}
+
+impl Default for Context {
+    fn default() -> Context {
+        Context::new()
+    }
+}
+
+impl Context {
+    /// A context with GL's initial state.
+    pub fn new() -> Context {
+        Context {
+            error: ErrorFlag::default(),
+            lights: std::array::from_fn(Light::initial),
+            materials: [Material::default(); 2],
+            light_model: LightModel::default(),
+            color_material: ColorMaterial::default(),
+            enables: Enables::initial(),
+            current: CurrentAttribs::default(),
+            matrices: Matrices::default(),
+            raster: RasterState::default(),
+            render_mode: RenderMode::Render,
+            feedback: FeedbackBuffer::default(),
+            feedback_address: 0,
+            primitive: None,
+            derived: None,
+        }
+    }
+
+    /// Records `error` unless an earlier one is still unread.
+    pub fn record_error(&mut self, error: GlError) {
+        self.error.record(error);
+    }
+
+    /// glGetError.
+    pub fn get_error(&mut self) -> GLenum {
+        self.error.take()
+    }
+
+    /// Runs a command's result into the error flag: the C layer's single exit.
+    pub fn settle<T: Default>(&mut self, result: GlResult<T>) -> T {
+        result.unwrap_or_else(|error| {
+            self.record_error(error);
+            T::default()
+        })
+    }
+
+    /// Whether the context is between glBegin and glEnd.
+    pub fn inside_begin_end(&self) -> bool {
+        self.primitive.is_some()
+    }
+
+    /// GL_INVALID_OPERATION between glBegin and glEnd, for the commands the spec forbids there.
+    pub(crate) fn outside_begin_end(&self) -> GlResult {
+        if self.inside_begin_end() {
+            Err(GlError::InvalidOperation)
+        } else {
+            Ok(())
+        }
+    }
+
+    /// Marks every derived constant stale (a state change that affects vertices).
+    pub(crate) fn invalidate(&mut self) {
+        self.derived = None;
+    }
+
+    /// The derived per-vertex constants, rebuilt if a state change made them stale.
+    pub fn derived(&mut self) -> &DerivedState {
+        if self.derived.is_none() {
+            self.derived = Some(self.build_derived());
+        }
+        self.derived.as_ref().expect("just built")
+    }
+
+    fn build_derived(&self) -> DerivedState {
+        DerivedState {
+            transform: VertexTransform::new(
+                *self.matrices.modelview.top(),
+                *self.matrices.projection.top(),
+                *self.matrices.texture.top(),
+                self.enables.normalize,
+                self.enables.rescale_normal,
+            ),
+            lighting: PreparedLighting::new(
+                self.enables.lighting,
+                &self.lights,
+                &self.materials,
+                &self.light_model,
+                &self.color_material,
+            ),
+        }
+    }
+
+    /// Applies the current color to the properties color material tracks (§2.14.3).
+    pub(crate) fn apply_color_material(&mut self) {
+        let tracked = self.color_material.tracked();
+        let color: Vec4 = self.current.color;
+        for (material, mask) in self.materials.iter_mut().zip(tracked) {
+            material.set(mask, color);
+        }
+    }
+}

@@ -1,0 +1,152 @@
+//! Which context each thread is using (GL's "current context").
+//!
+//! A context is owned by its handle while no thread uses it; making it current moves it into
+//! the thread's slot, so GL calls reach it without any lock, and a context current on one
+//! thread cannot be made current on another.
+
+use std::cell::RefCell;
+use std::sync::{Arc, Mutex};
+
+use crate::context::Context;
+use crate::error::{GlError, GlResult};
+
+/// A context as applications hold it (`FflContext *` in C).
+#[derive(Debug, Default)]
+pub struct FflContext {
+    /// The context while no thread has it current.
+    idle: Mutex<Option<Box<Context>>>,
+}
+
+impl FflContext {
+    pub fn new() -> Arc<FflContext> {
+        Arc::new(FflContext {
+            idle: Mutex::new(Some(Box::new(Context::new()))),
+        })
+    }
+
+    fn take(&self) -> Option<Box<Context>> {
+        self.idle.lock().unwrap_or_else(|e| e.into_inner()).take()
+    }
+
+    fn put_back(&self, context: Box<Context>) {
+        *self.idle.lock().unwrap_or_else(|e| e.into_inner()) = Some(context);
+    }
+}
+
+/// The context current on this thread, out of its handle until released.
+struct Current {
+    handle: Arc<FflContext>,
+    context: Option<Box<Context>>,
+}
+
+impl Drop for Current {
+    fn drop(&mut self) {
+        if let Some(context) = self.context.take() {
+            self.handle.put_back(context);
+        }
+    }
+}
+
+thread_local! {
+    static CURRENT: RefCell<Option<Current>> = const { RefCell::new(None) };
+}
+
+/// Runs `f` on this thread's current context, first creating a default one if there is none.
+/// `None` when the thread is exiting or the call is re-entrant (a GL call from a callback).
+pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
+    CURRENT
+        .try_with(|slot| {
+            let mut slot = slot.try_borrow_mut().ok()?;
+            let current = slot.get_or_insert_with(|| {
+                let handle = FflContext::new();
+                let context = handle.take();
+                Current { handle, context }
+            });
+            current.context.as_deref_mut().map(f)
+        })
+        .ok()
+        .flatten()
+}
+
+/// Makes `handle` current on this thread (`None` releases the current one). A context that is
+/// current on another thread is GL_INVALID_OPERATION, and nothing changes.
+pub fn make_current(handle: Option<Arc<FflContext>>) -> GlResult {
+    CURRENT
+        .try_with(|slot| {
+            let mut slot = slot
+                .try_borrow_mut()
+                .map_err(|_| GlError::InvalidOperation)?;
+            if let (Some(current), Some(handle)) = (slot.as_ref(), handle.as_ref())
+                && Arc::ptr_eq(&current.handle, handle)
+            {
+                return Ok(());
+            }
+            let next = match handle {
+                Some(handle) => {
+                    let context = handle.take().ok_or(GlError::InvalidOperation)?;
+                    Some(Current {
+                        handle,
+                        context: Some(context),
+                    })
+                }
+                None => None,
+            };
+            *slot = next; // the previous context goes back to its handle
+            Ok(())
+        })
+        .unwrap_or(Err(GlError::InvalidOperation))
+}
+
+/// The handle of this thread's current context, if any.
+pub fn current_handle() -> Option<Arc<FflContext>> {
+    CURRENT
+        .try_with(|slot| {
+            let slot = slot.try_borrow().ok()?;
+            slot.as_ref().map(|current| current.handle.clone())
+        })
+        .ok()
+        .flatten()
+}
+
+/// Whether the context behind `handle` is current on some thread other than this one.
+pub fn current_elsewhere(handle: &Arc<FflContext>) -> bool {
+    let here = current_handle().is_some_and(|current| Arc::ptr_eq(&current, handle));
+    !here
+        && handle
+            .idle
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .is_none()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_context_current_elsewhere_cannot_be_made_current() {
+        let handle = FflContext::new();
+        make_current(Some(handle.clone())).unwrap();
+        let other = handle.clone();
+        let result = std::thread::spawn(move || make_current(Some(other)))
+            .join()
+            .unwrap();
+        assert_eq!(result, Err(GlError::InvalidOperation));
+        make_current(None).unwrap();
+        let other = handle.clone();
+        let result = std::thread::spawn(move || make_current(Some(other)))
+            .join()
+            .unwrap();
+        assert_eq!(result, Ok(()));
+    }
+
+    #[test]
+    fn each_thread_gets_its_own_default_context() {
+        with_current(|ctx| ctx.normal(glam::Vec3::X)).unwrap();
+        let other = std::thread::spawn(|| with_current(|ctx| ctx.current.normal).unwrap())
+            .join()
+            .unwrap();
+        assert_eq!(other, glam::Vec3::Z);
+        assert_eq!(with_current(|ctx| ctx.current.normal), Some(glam::Vec3::X));
+    }
+}

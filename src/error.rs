@@ -1,0 +1,46 @@
+//! GL errors: the error enum and the first-error-sticky flag (§2.5).
+
+use crate::gl::*;
+
+/// One GL error, as `glGetError` reports it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GlError {
+    InvalidEnum,
+    InvalidValue,
+    InvalidOperation,
+    StackOverflow,
+    StackUnderflow,
+    OutOfMemory,
+}
+
+impl GlError {
+    /// The GL enum value of this error.
+    pub fn code(self) -> GLenum {
+        match self {
+            GlError::InvalidEnum => GL_INVALID_ENUM,
+            GlError::InvalidValue => GL_INVALID_VALUE,
+            GlError::InvalidOperation => GL_INVALID_OPERATION,
+            GlError::StackOverflow => GL_STACK_OVERFLOW,
+            GlError::StackUnderflow => GL_STACK_UNDERFLOW,
+            GlError::OutOfMemory => GL_OUT_OF_MEMORY,
+        }
+    }
+}
+
+/// The result of a GL command: `Err` leaves the state unchanged and sets the error flag.
+pub type GlResult<T = ()> = Result<T, GlError>;
+
+/// The error flag: the first error is kept until `glGetError` reads it.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ErrorFlag(Option<GlError>);
+
+impl ErrorFlag {
+    pub fn record(&mut self, error: GlError) {
+        self.0.get_or_insert(error);
+    }
+
+    /// `glGetError`: returns the recorded error and clears it.
+    pub fn take(&mut self) -> GLenum {
+        self.0.take().map_or(GL_NO_ERROR, GlError::code)
+    }
+}

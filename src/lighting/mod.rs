@@ -1,0 +1,151 @@
+//! The lighting equation of §2.14.1, evaluated per vertex from constants prepared once per
+//! state change.
+//!
+//! The equation's per-light sum is regrouped by material factor:
+//! `Σ att·spot·(a_m·a_l + (n⊙L)·d_m·d_l + f·(n⊙h)^s·s_m·s_l)
+//!  = a_m·Σ att·spot·a_l + d_m·Σ att·spot·(n⊙L)·d_l + s_m·Σ att·spot·f·(n⊙h)^s·s_l`,
+//! so the material, which color material may replace per vertex, multiplies three sums once
+//! instead of entering every light's products.
+
+mod prepared;
+
+pub use prepared::{PreparedFace, PreparedLight, PreparedLighting};
+
+use glam::{Vec3, Vec4};
+
+/// The colors lighting gives one face of a vertex (§2.14.1): primary and secondary, clamped.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FaceColors {
+    pub primary: Vec4,
+    pub secondary: Vec4,
+}
+
+/// The colors of a vertex for both faces. Without two-sided lighting the back colors equal the
+/// front ones (§2.14.1: the front colors are used for every polygon).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LitVertex {
+    pub front: FaceColors,
+    pub back: FaceColors,
+}
+
+/// What the equation reads of one vertex: eye-space position, eye-space normal (already
+/// rescaled or normalized as enabled), and the current colors.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VertexInput {
+    pub eye: Vec4,
+    pub normal: Vec3,
+    pub color: Vec4,
+    pub secondary_color: Vec4,
+}
+
+fn clamp01(c: Vec4) -> Vec4 {
+    c.clamp(Vec4::ZERO, Vec4::ONE)
+}
+
+/// The per-face sums of light colors, weighted by the light-dependent factors.
+#[derive(Clone, Copy, Default)]
+struct LightSums {
+    ambient: Vec3,
+    diffuse: [Vec3; 2],
+    specular: [Vec3; 2],
+}
+
+impl PreparedLighting {
+    /// Lights one vertex (§2.14.1), or passes its current colors through when lighting is off.
+    pub fn shade(&self, input: &VertexInput) -> LitVertex {
+        if !self.enabled {
+            let face = FaceColors {
+                primary: clamp01(input.color),
+                secondary: clamp01(input.secondary_color),
+            };
+            return LitVertex {
+                front: face,
+                back: face,
+            };
+        }
+        let position = homogenize(input.eye);
+        let sums = self.light_sums(position, input.normal);
+        let front = self.face_color(0, &sums, input.color);
+        let back = if self.two_side {
+            self.face_color(1, &sums, input.color)
+        } else {
+            front
+        };
+        LitVertex { front, back }
+    }
+
+    fn light_sums(&self, position: Vec3, normal: Vec3) -> LightSums {
+        let mut sums = LightSums::default();
+        let eye_direction = if self.local_viewer {
+            (-position).normalize_or_zero()
+        } else {
+            Vec3::Z
+        };
+        for light in self.lights() {
+            let (to_light, attenuation) = if light.positional {
+                let offset = light.position - position;
+                let distance = offset.length();
+                let to_light = offset / distance;
+                (to_light, light.attenuation_at(distance))
+            } else {
+                (light.position, 1.0)
+            };
+            let spot = light.spot_factor(to_light);
+            if spot == 0.0 {
+                continue;
+            }
+            let weight = attenuation * spot;
+            sums.ambient += weight * light.ambient;
+
+            let half = if light.positional || self.local_viewer {
+                (to_light + eye_direction).normalize_or_zero()
+            } else {
+                light.infinite_half
+            };
+            let n_dot_l = normal.dot(to_light);
+            let n_dot_h = normal.dot(half);
+            // The back face sees the negated normal (§2.14.1).
+            let faces = if self.two_side { 2 } else { 1 };
+            for (face, sign) in [1.0f32, -1.0].into_iter().enumerate().take(faces) {
+                let diffuse = (sign * n_dot_l).max(0.0);
+                if diffuse > 0.0 {
+                    sums.diffuse[face] += (weight * diffuse) * light.diffuse;
+                    let shininess = self.faces[face].shininess;
+                    let specular = (sign * n_dot_h).max(0.0).powf(shininess);
+                    sums.specular[face] += (weight * specular) * light.specular;
+                }
+            }
+        }
+        sums
+    }
+
+    fn face_color(&self, face: usize, sums: &LightSums, color: Vec4) -> FaceColors {
+        let material = self.faces[face].material_for(color);
+        let ambient = material.ambient.truncate();
+        let unlit =
+            material.emission.truncate() + ambient * self.scene_ambient + ambient * sums.ambient;
+        let diffuse = material.diffuse.truncate() * sums.diffuse[face];
+        let specular = material.specular.truncate() * sums.specular[face];
+        let alpha = material.diffuse.w;
+        if self.separate_specular {
+            FaceColors {
+                primary: clamp01((unlit + diffuse).extend(alpha)),
+                secondary: clamp01(specular.extend(0.0)),
+            }
+        } else {
+            FaceColors {
+                primary: clamp01((unlit + diffuse + specular).extend(alpha)),
+                secondary: Vec4::ZERO,
+            }
+        }
+    }
+}
+
+/// A homogeneous eye-space point as a 3D point (§2.14.1 treats V as homogeneous).
+fn homogenize(eye: Vec4) -> Vec3 {
+    if eye.w != 0.0 && eye.w != 1.0 {
+        eye.truncate() / eye.w
+    } else {
+        eye.truncate()
+    }
+}

@@ -1,0 +1,125 @@
+//! Per-vertex transformation (§2.11) and lighting: object coordinates in, eye and clip
+//! coordinates, lit colors and the transformed texture coordinate out.
+
+use glam::{Mat3, Mat4, Vec3, Vec4};
+
+use crate::lighting::{LitVertex, PreparedLighting, VertexInput};
+
+/// The current vertex attributes (§2.7) that each glVertex copies.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CurrentAttribs {
+    pub color: Vec4,
+    pub secondary_color: Vec4,
+    pub normal: Vec3,
+    pub tex_coord: Vec4,
+    pub edge_flag: bool,
+}
+
+impl Default for CurrentAttribs {
+    fn default() -> CurrentAttribs {
+        CurrentAttribs {
+            color: Vec4::ONE,
+            secondary_color: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            normal: Vec3::Z,
+            tex_coord: Vec4::W,
+            edge_flag: true,
+        }
+    }
+}
+
+/// A vertex after transformation and lighting, ready for primitive assembly.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ProcessedVertex {
+    pub eye: Vec4,
+    pub clip: Vec4,
+    pub colors: LitVertex,
+    /// The texture coordinate after the texture matrix.
+    pub tex_coord: Vec4,
+    pub edge_flag: bool,
+}
+
+/// The matrices a vertex goes through, derived once per matrix or enable change.
+#[derive(Clone, Debug, PartialEq)]
+pub struct VertexTransform {
+    pub modelview: Mat4,
+    pub projection: Mat4,
+    pub texture: Mat4,
+    /// The inverse transpose of the modelview's upper-left 3x3 (§2.11.3).
+    pub normal_matrix: Mat3,
+    /// GL_RESCALE_NORMAL's factor, when rescaling applies (enabled, GL_NORMALIZE off).
+    pub normal_rescale: Option<f32>,
+    pub normalize: bool,
+}
+
+impl VertexTransform {
+    pub fn new(
+        modelview: Mat4,
+        projection: Mat4,
+        texture: Mat4,
+        normalize: bool,
+        rescale_normal: bool,
+    ) -> VertexTransform {
+        let inverse = Mat3::from_mat4(modelview).inverse();
+        let normal_rescale = (rescale_normal && !normalize).then(|| {
+            // §2.11.3: 1 / sqrt(m31² + m32² + m33²) of the inverse's third row.
+            let length_squared = inverse.row(2).length_squared();
+            if length_squared < 1e-12 {
+                1.0
+            } else {
+                1.0 / length_squared.sqrt()
+            }
+        });
+        VertexTransform {
+            modelview,
+            projection,
+            texture,
+            normal_matrix: inverse.transpose(),
+            normal_rescale,
+            normalize,
+        }
+    }
+
+    /// The eye-space normal (§2.11.3): transformed, then rescaled or normalized as enabled.
+    pub fn eye_normal(&self, normal: Vec3) -> Vec3 {
+        let eye = self.normal_matrix * normal;
+        if self.normalize {
+            eye.normalize_or_zero()
+        } else if let Some(scale) = self.normal_rescale {
+            eye * scale
+        } else {
+            eye
+        }
+    }
+}
+
+/// All per-vertex constants: what a draw call reads instead of the raw state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DerivedState {
+    pub transform: VertexTransform,
+    pub lighting: PreparedLighting,
+}
+
+impl DerivedState {
+    /// Transforms and lights one vertex given in object coordinates.
+    pub fn process(&self, object: Vec4, attribs: &CurrentAttribs) -> ProcessedVertex {
+        let transform = &self.transform;
+        let eye = transform.modelview * object;
+        let colors = self.lighting.shade(&VertexInput {
+            eye,
+            normal: if self.lighting.enabled {
+                transform.eye_normal(attribs.normal)
+            } else {
+                attribs.normal
+            },
+            color: attribs.color,
+            secondary_color: attribs.secondary_color,
+        });
+        ProcessedVertex {
+            eye,
+            clip: transform.projection * eye,
+            colors,
+            tex_coord: transform.texture * attribs.tex_coord,
+            edge_flag: attribs.edge_flag,
+        }
+    }
+}

@@ -1,0 +1,96 @@
+//! Integer <-> float conversions of §2.14 (table 2.9) and §6.1.2.
+
+/// A signed 32-bit integer color component mapped linearly to [-1, 1]: (2c + 1) / (2^32 - 1).
+pub fn int_to_color(c: i32) -> f32 {
+    ((2.0 * c as f64 + 1.0) / 4_294_967_295.0) as f32
+}
+
+/// A float color component mapped back to a signed 32-bit integer (§6.1.2), clamped.
+pub fn color_to_int(f: f32) -> i32 {
+    let value = ((4_294_967_295.0 * f as f64) - 1.0) / 2.0;
+    value.round().clamp(i32::MIN as f64, i32::MAX as f64) as i32
+}
+
+/// Any other float state as an integer: rounded to the nearest (§6.1.2), clamped.
+pub fn float_to_int(f: f32) -> i32 {
+    (f as f64).round().clamp(i32::MIN as f64, i32::MAX as f64) as i32
+}
+
+/// A signed byte component (normals, colors) mapped to [-1, 1]: (2c + 1) / 255.
+pub fn byte_to_float(c: i8) -> f32 {
+    (2.0 * c as f32 + 1.0) / 255.0
+}
+
+/// A signed short component mapped to [-1, 1]: (2c + 1) / 65535.
+pub fn short_to_float(c: i16) -> f32 {
+    ((2.0 * c as f64 + 1.0) / 65535.0) as f32
+}
+
+/// An unsigned byte component mapped to [0, 1].
+pub fn ubyte_to_float(c: u8) -> f32 {
+    c as f32 / 255.0
+}
+
+/// An unsigned short component mapped to [0, 1].
+pub fn ushort_to_float(c: u16) -> f32 {
+    (c as f64 / 65535.0) as f32
+}
+
+/// An unsigned int component mapped to [0, 1].
+pub fn uint_to_float(c: u32) -> f32 {
+    (c as f64 / 4_294_967_295.0) as f32
+}
+
+/// A GL component type, as the typed entry points (glColor3ub, glNormal3s ...) pass it.
+pub trait Component: Copy {
+    /// Normalized per table 2.9: signed types to [-1, 1], unsigned to [0, 1], floats as they are.
+    fn normalized(self) -> f32;
+    /// Converted directly, as vertex and texture coordinates are.
+    fn direct(self) -> f32;
+}
+
+macro_rules! component {
+    ($t:ty, $normalize:expr) => {
+        impl Component for $t {
+            fn normalized(self) -> f32 {
+                $normalize(self)
+            }
+            fn direct(self) -> f32 {
+                self as f32
+            }
+        }
+    };
+}
+
+component!(i8, byte_to_float);
+component!(u8, ubyte_to_float);
+component!(i16, short_to_float);
+component!(u16, ushort_to_float);
+component!(i32, int_to_color);
+component!(u32, uint_to_float);
+component!(f32, |v: f32| v);
+component!(f64, |v: f64| v as f32);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn signed_ends_map_to_plus_minus_one() {
+        assert_eq!(int_to_color(i32::MAX), 1.0);
+        assert_eq!(int_to_color(i32::MIN), -1.0);
+        assert_eq!(byte_to_float(127), 1.0);
+        assert_eq!(byte_to_float(-128), -1.0);
+        assert_eq!(short_to_float(i16::MAX), 1.0);
+        assert_eq!(ubyte_to_float(255), 1.0);
+        assert_eq!(uint_to_float(u32::MAX), 1.0);
+    }
+
+    #[test]
+    fn colors_round_trip_through_integers() {
+        assert_eq!(color_to_int(1.0), i32::MAX);
+        assert_eq!(color_to_int(-1.0), i32::MIN);
+        assert_eq!(float_to_int(2.5), 3);
+        assert_eq!(float_to_int(-0.4), 0);
+    }
+}

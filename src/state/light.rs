@@ -1,0 +1,148 @@
+//! Light source state (§2.14.1, table 2.10): one `Light` per GL_LIGHTi.
+
+use glam::{Mat4, Vec3, Vec4};
+
+use super::convert::int_to_color;
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+
+/// GL_MAX_LIGHTS.
+pub const MAX_LIGHTS: usize = 8;
+
+/// One light source. Position and spot direction are stored in eye coordinates,
+/// transformed by the modelview matrix in force when they were specified.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Light {
+    pub enabled: bool,
+    pub ambient: Vec4,
+    pub diffuse: Vec4,
+    pub specular: Vec4,
+    pub eye_position: Vec4,
+    pub eye_spot_direction: Vec3,
+    pub spot_exponent: f32,
+    pub spot_cutoff: f32,
+    pub constant_attenuation: f32,
+    pub linear_attenuation: f32,
+    pub quadratic_attenuation: f32,
+}
+
+impl Light {
+    /// The initial state of light `index`: light 0 is white, the others black.
+    pub fn initial(index: usize) -> Light {
+        let white_if_first = if index == 0 { Vec4::ONE } else { Vec4::W };
+        Light {
+            enabled: false,
+            ambient: Vec4::W,
+            diffuse: white_if_first,
+            specular: white_if_first,
+            eye_position: Vec4::new(0.0, 0.0, 1.0, 0.0),
+            eye_spot_direction: Vec3::new(0.0, 0.0, -1.0),
+            spot_exponent: 0.0,
+            spot_cutoff: 180.0,
+            constant_attenuation: 1.0,
+            linear_attenuation: 0.0,
+            quadratic_attenuation: 0.0,
+        }
+    }
+}
+
+/// The index of GL_LIGHTi, or GL_INVALID_ENUM.
+pub fn light_index(light: GLenum) -> GlResult<usize> {
+    let index = light.wrapping_sub(GL_LIGHT0) as usize;
+    if index < MAX_LIGHTS {
+        Ok(index)
+    } else {
+        Err(GlError::InvalidEnum)
+    }
+}
+
+/// How many values `pname` takes in glLight / glGetLight, or `None` when it is not a light parameter.
+pub fn light_param_count(pname: GLenum) -> Option<usize> {
+    match pname {
+        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => Some(4),
+        GL_SPOT_DIRECTION => Some(3),
+        GL_SPOT_EXPONENT
+        | GL_SPOT_CUTOFF
+        | GL_CONSTANT_ATTENUATION
+        | GL_LINEAR_ATTENUATION
+        | GL_QUADRATIC_ATTENUATION => Some(1),
+        _ => None,
+    }
+}
+
+/// Whether `pname` is a color, converted with the signed-integer color mapping in glLightiv.
+pub fn is_light_color(pname: GLenum) -> bool {
+    matches!(pname, GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR)
+}
+
+/// Integer parameters as floats: colors by the linear mapping, the rest directly.
+pub fn light_params_from_ints(pname: GLenum, params: &[i32]) -> Vec4 {
+    let mut values = [0.0; 4];
+    for (value, &param) in values.iter_mut().zip(params) {
+        *value = if is_light_color(pname) {
+            int_to_color(param)
+        } else {
+            param as f32
+        };
+    }
+    Vec4::from_array(values)
+}
+
+impl Light {
+    /// glLightfv on this light, `params` holding at least `light_param_count(pname)` values
+    /// (the caller checked the pname). Validates, then stores.
+    pub fn set(&mut self, pname: GLenum, params: Vec4, modelview: &Mat4) -> GlResult {
+        let scalar = params.x;
+        match pname {
+            GL_AMBIENT => self.ambient = params,
+            GL_DIFFUSE => self.diffuse = params,
+            GL_SPECULAR => self.specular = params,
+            GL_POSITION => self.eye_position = *modelview * params,
+            GL_SPOT_DIRECTION => {
+                self.eye_spot_direction = modelview.transform_vector3(params.truncate())
+            }
+            GL_SPOT_EXPONENT => {
+                if !(0.0..=128.0).contains(&scalar) {
+                    return Err(GlError::InvalidValue);
+                }
+                self.spot_exponent = scalar;
+            }
+            GL_SPOT_CUTOFF => {
+                if !((0.0..=90.0).contains(&scalar) || scalar == 180.0) {
+                    return Err(GlError::InvalidValue);
+                }
+                self.spot_cutoff = scalar;
+            }
+            GL_CONSTANT_ATTENUATION | GL_LINEAR_ATTENUATION | GL_QUADRATIC_ATTENUATION => {
+                if scalar.is_nan() || scalar < 0.0 {
+                    return Err(GlError::InvalidValue);
+                }
+                match pname {
+                    GL_CONSTANT_ATTENUATION => self.constant_attenuation = scalar,
+                    GL_LINEAR_ATTENUATION => self.linear_attenuation = scalar,
+                    _ => self.quadratic_attenuation = scalar,
+                }
+            }
+            _ => return Err(GlError::InvalidEnum),
+        }
+        Ok(())
+    }
+
+    /// glGetLightfv: the stored value, padded to four.
+    pub fn get(&self, pname: GLenum) -> GlResult<Vec4> {
+        let scalar = |v: f32| Vec4::new(v, 0.0, 0.0, 0.0);
+        Ok(match pname {
+            GL_AMBIENT => self.ambient,
+            GL_DIFFUSE => self.diffuse,
+            GL_SPECULAR => self.specular,
+            GL_POSITION => self.eye_position,
+            GL_SPOT_DIRECTION => self.eye_spot_direction.extend(0.0),
+            GL_SPOT_EXPONENT => scalar(self.spot_exponent),
+            GL_SPOT_CUTOFF => scalar(self.spot_cutoff),
+            GL_CONSTANT_ATTENUATION => scalar(self.constant_attenuation),
+            GL_LINEAR_ATTENUATION => scalar(self.linear_attenuation),
+            GL_QUADRATIC_ATTENUATION => scalar(self.quadratic_attenuation),
+            _ => return Err(GlError::InvalidEnum),
+        })
+    }
+}

@@ -1,0 +1,63 @@
+//! Light model state (§2.14.1, table 2.10 glLightModel).
+
+use glam::Vec4;
+
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightModel {
+    pub ambient: Vec4,
+    pub local_viewer: bool,
+    pub two_side: bool,
+    /// GL_SINGLE_COLOR or GL_SEPARATE_SPECULAR_COLOR.
+    pub color_control: GLenum,
+}
+
+impl Default for LightModel {
+    fn default() -> LightModel {
+        LightModel {
+            ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+            local_viewer: false,
+            two_side: false,
+            color_control: GL_SINGLE_COLOR,
+        }
+    }
+}
+
+/// How many values a glLightModel pname takes, or `None` for a bad pname.
+pub fn light_model_param_count(pname: GLenum) -> Option<usize> {
+    match pname {
+        GL_LIGHT_MODEL_AMBIENT => Some(4),
+        GL_LIGHT_MODEL_LOCAL_VIEWER | GL_LIGHT_MODEL_TWO_SIDE | GL_LIGHT_MODEL_COLOR_CONTROL => {
+            Some(1)
+        }
+        _ => None,
+    }
+}
+
+impl LightModel {
+    /// glLightModelfv with validated-count `params`.
+    pub fn set(&mut self, pname: GLenum, params: Vec4) -> GlResult {
+        match pname {
+            GL_LIGHT_MODEL_AMBIENT => self.ambient = params,
+            GL_LIGHT_MODEL_LOCAL_VIEWER => self.local_viewer = params.x != 0.0,
+            GL_LIGHT_MODEL_TWO_SIDE => self.two_side = params.x != 0.0,
+            GL_LIGHT_MODEL_COLOR_CONTROL => {
+                let mode = params.x as GLenum;
+                if params.x != mode as f32
+                    || !matches!(mode, GL_SINGLE_COLOR | GL_SEPARATE_SPECULAR_COLOR)
+                {
+                    return Err(GlError::InvalidEnum);
+                }
+                self.color_control = mode;
+            }
+            _ => return Err(GlError::InvalidEnum),
+        }
+        Ok(())
+    }
+
+    pub fn separate_specular(&self) -> bool {
+        self.color_control == GL_SEPARATE_SPECULAR_COLOR
+    }
+}

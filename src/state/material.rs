@@ -1,0 +1,189 @@
+//! Material state (§2.14.1, table 2.11) and color material tracking (§2.14.3).
+
+use glam::Vec4;
+
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+
+/// Index of the front and back material in `[Material; 2]`.
+pub const FRONT: usize = 0;
+pub const BACK: usize = 1;
+
+/// The material of one face.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material {
+    pub ambient: Vec4,
+    pub diffuse: Vec4,
+    pub specular: Vec4,
+    pub emission: Vec4,
+    pub shininess: f32,
+    /// GL_COLOR_INDEXES: ambient, diffuse and specular indexes (stored for queries only).
+    pub color_indexes: [f32; 3],
+}
+
+impl Default for Material {
+    fn default() -> Material {
+        Material {
+            ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+            diffuse: Vec4::new(0.8, 0.8, 0.8, 1.0),
+            specular: Vec4::W,
+            emission: Vec4::W,
+            shininess: 0.0,
+            color_indexes: [0.0, 1.0, 1.0],
+        }
+    }
+}
+
+/// A set of material properties, as bits: which properties a glMaterial or color material touches.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct MaterialMask(pub u8);
+
+impl MaterialMask {
+    pub const NONE: MaterialMask = MaterialMask(0);
+    pub const AMBIENT: MaterialMask = MaterialMask(1);
+    pub const DIFFUSE: MaterialMask = MaterialMask(2);
+    pub const SPECULAR: MaterialMask = MaterialMask(4);
+    pub const EMISSION: MaterialMask = MaterialMask(8);
+    pub const SHININESS: MaterialMask = MaterialMask(16);
+    pub const COLOR_INDEXES: MaterialMask = MaterialMask(32);
+
+    pub fn contains(self, other: MaterialMask) -> bool {
+        self.0 & other.0 == other.0 && other.0 != 0
+    }
+
+    pub fn union(self, other: MaterialMask) -> MaterialMask {
+        MaterialMask(self.0 | other.0)
+    }
+
+    pub fn without(self, other: MaterialMask) -> MaterialMask {
+        MaterialMask(self.0 & !other.0)
+    }
+
+    /// The properties a glMaterial pname sets, or GL_INVALID_ENUM.
+    pub fn of_pname(pname: GLenum) -> GlResult<MaterialMask> {
+        Ok(match pname {
+            GL_AMBIENT => Self::AMBIENT,
+            GL_DIFFUSE => Self::DIFFUSE,
+            GL_SPECULAR => Self::SPECULAR,
+            GL_EMISSION => Self::EMISSION,
+            GL_SHININESS => Self::SHININESS,
+            GL_AMBIENT_AND_DIFFUSE => Self::AMBIENT.union(Self::DIFFUSE),
+            GL_COLOR_INDEXES => Self::COLOR_INDEXES,
+            _ => return Err(GlError::InvalidEnum),
+        })
+    }
+
+    /// The properties a glColorMaterial mode tracks, or GL_INVALID_ENUM.
+    pub fn of_color_material_mode(mode: GLenum) -> GlResult<MaterialMask> {
+        match mode {
+            GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => {
+                Self::of_pname(mode)
+            }
+            _ => Err(GlError::InvalidEnum),
+        }
+    }
+}
+
+/// The faces a GL_FRONT / GL_BACK / GL_FRONT_AND_BACK argument names, as `[front, back]`.
+pub fn faces(face: GLenum) -> GlResult<[bool; 2]> {
+    match face {
+        GL_FRONT => Ok([true, false]),
+        GL_BACK => Ok([false, true]),
+        GL_FRONT_AND_BACK => Ok([true, true]),
+        _ => Err(GlError::InvalidEnum),
+    }
+}
+
+/// How many values a glMaterial / glGetMaterial pname takes, or `None` for a bad pname.
+pub fn material_param_count(pname: GLenum) -> Option<usize> {
+    match pname {
+        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => Some(4),
+        GL_SHININESS => Some(1),
+        GL_COLOR_INDEXES => Some(3),
+        _ => None,
+    }
+}
+
+/// Whether `pname` is a color, converted with the signed-integer color mapping in glMaterialiv.
+pub fn is_material_color(pname: GLenum) -> bool {
+    matches!(
+        pname,
+        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE
+    )
+}
+
+impl Material {
+    /// Stores the properties of `mask` from `params` (validated by the caller).
+    pub fn set(&mut self, mask: MaterialMask, params: Vec4) {
+        if mask.contains(MaterialMask::AMBIENT) {
+            self.ambient = params;
+        }
+        if mask.contains(MaterialMask::DIFFUSE) {
+            self.diffuse = params;
+        }
+        if mask.contains(MaterialMask::SPECULAR) {
+            self.specular = params;
+        }
+        if mask.contains(MaterialMask::EMISSION) {
+            self.emission = params;
+        }
+        if mask.contains(MaterialMask::SHININESS) {
+            self.shininess = params.x;
+        }
+        if mask.contains(MaterialMask::COLOR_INDEXES) {
+            self.color_indexes = [params.x, params.y, params.z];
+        }
+    }
+
+    /// glGetMaterialfv: the stored value, padded to four.
+    pub fn get(&self, pname: GLenum) -> GlResult<Vec4> {
+        Ok(match pname {
+            GL_AMBIENT => self.ambient,
+            GL_DIFFUSE => self.diffuse,
+            GL_SPECULAR => self.specular,
+            GL_EMISSION => self.emission,
+            GL_SHININESS => Vec4::new(self.shininess, 0.0, 0.0, 0.0),
+            GL_COLOR_INDEXES => Vec4::new(
+                self.color_indexes[0],
+                self.color_indexes[1],
+                self.color_indexes[2],
+                0.0,
+            ),
+            _ => return Err(GlError::InvalidEnum),
+        })
+    }
+}
+
+/// glColorMaterial state (§2.14.3).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ColorMaterial {
+    pub enabled: bool,
+    pub face: GLenum,
+    pub mode: GLenum,
+}
+
+impl Default for ColorMaterial {
+    fn default() -> ColorMaterial {
+        ColorMaterial {
+            enabled: false,
+            face: GL_FRONT_AND_BACK,
+            mode: GL_AMBIENT_AND_DIFFUSE,
+        }
+    }
+}
+
+impl ColorMaterial {
+    /// The properties of each face that follow the current color: none while disabled.
+    pub fn tracked(&self) -> [MaterialMask; 2] {
+        if !self.enabled {
+            return [MaterialMask::NONE; 2];
+        }
+        // face and mode were validated when stored.
+        let mask = MaterialMask::of_color_material_mode(self.mode).unwrap_or_default();
+        let [front, back] = faces(self.face).unwrap_or([false, false]);
+        [
+            if front { mask } else { MaterialMask::NONE },
+            if back { mask } else { MaterialMask::NONE },
+        ]
+    }
+}

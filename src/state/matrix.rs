@@ -1,0 +1,166 @@
+//! Matrix stacks (§2.11.2): modelview, projection and texture.
+
+use glam::{DMat4, DVec3, Mat4};
+
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+
+pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
+pub const MAX_PROJECTION_STACK_DEPTH: usize = 32;
+pub const MAX_TEXTURE_STACK_DEPTH: usize = 10;
+
+/// One stack: the top is the current matrix.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MatrixStack {
+    entries: Vec<Mat4>,
+    max_depth: usize,
+}
+
+impl MatrixStack {
+    pub fn new(max_depth: usize) -> MatrixStack {
+        let mut entries = Vec::with_capacity(max_depth);
+        entries.push(Mat4::IDENTITY);
+        MatrixStack { entries, max_depth }
+    }
+
+    pub fn top(&self) -> &Mat4 {
+        self.entries.last().expect("a matrix stack is never empty")
+    }
+
+    pub fn top_mut(&mut self) -> &mut Mat4 {
+        self.entries
+            .last_mut()
+            .expect("a matrix stack is never empty")
+    }
+
+    pub fn depth(&self) -> usize {
+        self.entries.len()
+    }
+
+    pub fn max_depth(&self) -> usize {
+        self.max_depth
+    }
+
+    pub fn push(&mut self) -> GlResult {
+        if self.entries.len() >= self.max_depth {
+            return Err(GlError::StackOverflow);
+        }
+        self.entries.push(*self.top());
+        Ok(())
+    }
+
+    pub fn pop(&mut self) -> GlResult {
+        if self.entries.len() <= 1 {
+            return Err(GlError::StackUnderflow);
+        }
+        self.entries.pop();
+        Ok(())
+    }
+}
+
+/// The three stacks and glMatrixMode.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Matrices {
+    pub mode: GLenum,
+    pub modelview: MatrixStack,
+    pub projection: MatrixStack,
+    pub texture: MatrixStack,
+}
+
+impl Default for Matrices {
+    fn default() -> Matrices {
+        Matrices {
+            mode: GL_MODELVIEW,
+            modelview: MatrixStack::new(MAX_MODELVIEW_STACK_DEPTH),
+            projection: MatrixStack::new(MAX_PROJECTION_STACK_DEPTH),
+            texture: MatrixStack::new(MAX_TEXTURE_STACK_DEPTH),
+        }
+    }
+}
+
+impl Matrices {
+    pub fn stack(&self, mode: GLenum) -> &MatrixStack {
+        match mode {
+            GL_PROJECTION => &self.projection,
+            GL_TEXTURE => &self.texture,
+            _ => &self.modelview,
+        }
+    }
+
+    /// The stack glMatrixMode selects.
+    pub fn current_mut(&mut self) -> &mut MatrixStack {
+        match self.mode {
+            GL_PROJECTION => &mut self.projection,
+            GL_TEXTURE => &mut self.texture,
+            _ => &mut self.modelview,
+        }
+    }
+
+    pub fn set_mode(&mut self, mode: GLenum) -> GlResult {
+        if !matches!(mode, GL_MODELVIEW | GL_PROJECTION | GL_TEXTURE) {
+            return Err(GlError::InvalidEnum);
+        }
+        self.mode = mode;
+        Ok(())
+    }
+}
+
+/// glRotate's matrix (§2.11.2): `angle` in degrees about (x, y, z); a zero axis leaves identity.
+pub fn rotation(angle: f64, x: f64, y: f64, z: f64) -> DMat4 {
+    let axis = DVec3::new(x, y, z);
+    let length = axis.length();
+    if length == 0.0 || !length.is_finite() {
+        return DMat4::IDENTITY;
+    }
+    DMat4::from_axis_angle(axis / length, angle.to_radians())
+}
+
+/// glFrustum's matrix, or GL_INVALID_VALUE for a degenerate volume.
+pub fn frustum(l: f64, r: f64, b: f64, t: f64, n: f64, f: f64) -> GlResult<DMat4> {
+    if n <= 0.0 || f <= 0.0 || l == r || b == t || n == f {
+        return Err(GlError::InvalidValue);
+    }
+    Ok(DMat4::from_cols_array(&[
+        2.0 * n / (r - l),
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        2.0 * n / (t - b),
+        0.0,
+        0.0,
+        (r + l) / (r - l),
+        (t + b) / (t - b),
+        -(f + n) / (f - n),
+        -1.0,
+        0.0,
+        0.0,
+        -2.0 * f * n / (f - n),
+        0.0,
+    ]))
+}
+
+/// glOrtho's matrix, or GL_INVALID_VALUE for a degenerate volume.
+pub fn ortho(l: f64, r: f64, b: f64, t: f64, n: f64, f: f64) -> GlResult<DMat4> {
+    if l == r || b == t || n == f {
+        return Err(GlError::InvalidValue);
+    }
+    Ok(DMat4::from_cols_array(&[
+        2.0 / (r - l),
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        2.0 / (t - b),
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        -2.0 / (f - n),
+        0.0,
+        -(r + l) / (r - l),
+        -(t + b) / (t - b),
+        -(f + n) / (f - n),
+        1.0,
+    ]))
+}

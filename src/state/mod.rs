@@ -1,0 +1,9 @@
+//! GL state and its validation, one module per group of state. No pointers here.
+
+pub mod convert;
+pub mod enables;
+pub mod light;
+pub mod light_model;
+pub mod material;
+pub mod matrix;
+pub mod raster;
