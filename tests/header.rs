@@ -1,0 +1,86 @@
+//! The checked-in C header equals what build.rs generates now, and it compiles under the
+//! strictest flags alone and together with the system <GL/gl.h>, in either order.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn manifest_dir() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+#[test]
+fn checked_in_header_matches_the_generated_one() {
+    let generated = include_str!(concat!(env!("OUT_DIR"), "/fflight.h"));
+    let checked_in = std::fs::read_to_string(manifest_dir().join("include/fflight.h"))
+        .expect("include/fflight.h exists");
+    assert!(
+        generated == checked_in,
+        "include/fflight.h is stale: run `make header` (FFLIGHT_BLESS=1 cargo build) and commit it"
+    );
+}
+
+fn compile(name: &str, source: &str, extra_flags: &[&str]) {
+    let dir = manifest_dir().join("target/header_tests");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path: PathBuf = dir.join(name);
+    std::fs::write(&path, source).unwrap();
+    let output = Command::new("cc")
+        .args(["-Wall", "-Wextra", "-Werror", "-pedantic", "-fsyntax-only"])
+        .args(if extra_flags.is_empty() {
+            &["-std=c99"][..]
+        } else {
+            extra_flags
+        })
+        .arg("-I")
+        .arg(manifest_dir().join("include"))
+        .arg(&path)
+        .output()
+        .expect("a C compiler (cc) is installed");
+    assert!(
+        output.status.success(),
+        "{name} does not compile:\n{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+}
+
+const BODY: &str = "
+int main(void) {
+    GLfloat ambient[4] = {0.1f, 0.2f, 0.3f, 1.0f};
+    GLfloat m[16] = {1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1};
+    glLightfv(GL_LIGHT0, GL_AMBIENT, ambient);
+    glLoadTransposeMatrixf(m);
+    return (int)glGetError();
+}
+";
+
+#[test]
+fn header_compiles_alone() {
+    compile("alone.c", &format!("#include \"fflight.h\"\n{BODY}"), &[]);
+}
+
+#[test]
+fn header_compiles_after_the_system_gl_header() {
+    compile(
+        "gl_first.c",
+        &format!("#include <GL/gl.h>\n#include \"fflight.h\"\n{BODY}"),
+        &[],
+    );
+}
+
+#[test]
+fn header_compiles_before_the_system_gl_header() {
+    compile(
+        "gl_last.c",
+        &format!("#include \"fflight.h\"\n#include <GL/gl.h>\n{BODY}"),
+        &[],
+    );
+}
+
+#[test]
+fn header_compiles_as_cpp() {
+    compile(
+        "as_cpp.c",
+        &format!("#include \"fflight.h\"\n{BODY}"),
+        &["-x", "c++", "-std=c++11"],
+    );
+}
