@@ -81,7 +81,7 @@ int main(void)
     ffl_print_error("get_light_bad_pname");
 
     /* materials */
-    glMaterialfv(GL_LEFT, GL_AMBIENT, color);
+    glMaterialfv(0x0406 /* GL_LEFT: an enum that names no face */, GL_AMBIENT, color);
     ffl_print_error("material_bad_face");
     glMaterialfv(GL_FRONT, GL_POSITION, color);
     ffl_print_error("material_bad_pname");
@@ -106,7 +106,7 @@ int main(void)
     ffl_print_error("color_control_bad_value");
     glColorMaterial(GL_FRONT, GL_SHININESS);
     ffl_print_error("color_material_bad_mode");
-    glColorMaterial(GL_LEFT, GL_DIFFUSE);
+    glColorMaterial(0x0406 /* GL_LEFT */, GL_DIFFUSE);
     ffl_print_error("color_material_bad_face");
     glEnable(0x1234);
     ffl_print_error("enable_bad_cap");

@@ -30,8 +30,8 @@ static void show(const char *what, GLenum pname, int n, const GLint *expect)
 
 int main(void)
 {
-    static const GLfloat color[4] = { -1.0f, 1.0f, 0.0f, -0.5f };
-    static const GLint color_expect[4] = { INT_MIN, INT_MAX, 0, -1073741824 };
+    static const GLfloat color[4] = { -1.0f, 1.0f, 0.25f, -0.5f };
+    static const GLint color_expect[4] = { INT_MIN, INT_MAX, 536870911, -1073741824 };
     static const GLfloat direction[3] = { 0, -1, -2 };
     static const GLint direction_expect[3] = { 1, 0, -2 };
     static const GLint exponent_expect[1] = { 3 };
@@ -44,7 +44,9 @@ int main(void)
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
 
-    /* spec: -1.0 -> -2^31; -0.5 -> ((2^32 - 1)(-0.5) - 1) / 2 = -1073741824.25 */
+    /* spec: c -> ((2^32 - 1) c - 1) / 2, rounded: -1.0 -> -2^31;
+     * 0.25 -> 536870911.375; -0.5 -> -1073741824.25. (0.0 gives -0.5, a
+     * tie, so it is not used.) */
     glLightfv(GL_LIGHT1, GL_DIFFUSE, color);
     show("diffuse", GL_DIFFUSE, 4, color_expect);
 

@@ -574,4 +574,54 @@ static inline void ref_lit_color(const ref_state *s, const double *obj, int face
     secondary[3] = 0.0;
 }
 
+/* How strongly the lit color amplifies float rounding: a float32
+ * implementation computes n . h_i and the spot cosine with a relative error
+ * of a few ulps, and raising them to the power `shininess` or
+ * `spot_exponent` multiplies that relative error by the exponent. Returns,
+ * for the color component most affected, the sum over lights of exponent
+ * times term: the color's error is about this sum times the relative error
+ * `rel` of the dot products (a non-unit normal can make n . h_i > 1, and a
+ * high shininess then makes the specular term large and sensitive). A
+ * component that clamps to 0 or 1 even with that error counts as exact. */
+static inline double ref_color_sensitivity(const ref_state *s, const double *obj, int face,
+                                           double rel)
+{
+    const ref_material *m = &s->material[face];
+    ref_light_terms terms[REF_MAX_LIGHTS];
+    double v3[3], n[3], worst = 0.0;
+    int i, k;
+    if (!s->lighting)
+        return 0.0;
+    ref_vertex_terms(s, obj, face, v3, n, terms);
+    for (k = 0; k < 3; k++) {
+        double sum = 0.0, value = m->emission[k] + m->ambient[k] * s->model_ambient[k];
+        double primary_spec = 0.0;
+        for (i = 0; i < REF_MAX_LIGHTS; i++) {
+            const ref_light *l = &s->light[i];
+            const ref_light_terms *t = &terms[i];
+            double scale = t->attenuation * t->spot, spec = 0.0, rest;
+            if (!l->enabled)
+                continue;
+            if (t->n_dot_l > 0.0)
+                spec = scale * pow(t->n_dot_h > 0.0 ? t->n_dot_h : 0.0, m->shininess) *
+                       m->specular[k] * l->specular[k];
+            rest = scale * (m->ambient[k] * l->ambient[k] +
+                            (t->n_dot_l > 0.0 ? t->n_dot_l : 0.0) * m->diffuse[k] * l->diffuse[k]);
+            value += rest;
+            primary_spec += spec;
+            if (!s->separate_specular)
+                sum += m->shininess * fabs(spec);
+            if (l->spot_cutoff != 180.0)
+                sum += l->spot_exponent * fabs(rest + (s->separate_specular ? 0.0 : spec));
+        }
+        if (!s->separate_specular)
+            value += primary_spec;
+        if (value - sum * rel > 1.0 || value + sum * rel < 0.0)
+            continue; /* clamped either way */
+        if (sum > worst)
+            worst = sum;
+    }
+    return worst;
+}
+
 #endif /* FFL_LIGHTING_REF_H */
