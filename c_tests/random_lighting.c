@@ -17,7 +17,7 @@
  * osmesa_exemption() for the cases.
  */
 #include "ffl_test.h"
-#include "reference/lighting_ref.h"
+#include "reference/gl_mirror.h"
 
 #include <string.h>
 
@@ -181,42 +181,6 @@ static void random_color_scaled(ffl_rng *r, float *c, double max)
     c[3] = ffl_rng_float(r, 0, 1);
 }
 
-static void light_fv(ref_state *ref, GLenum light, GLenum pname, const float *p)
-{
-    glLightfv(light, pname, p);
-    ref_lightfv(ref, light, pname, p);
-}
-
-static void light_f(ref_state *ref, GLenum light, GLenum pname, float p)
-{
-    glLightf(light, pname, p);
-    ref_lightf(ref, light, pname, p);
-}
-
-static void material_fv(ref_state *ref, GLenum face, GLenum pname, const float *p)
-{
-    glMaterialfv(face, pname, p);
-    ref_materialfv(ref, face, pname, p);
-}
-
-static void enable(ref_state *ref, GLenum cap, int on)
-{
-    if (on)
-        glEnable(cap);
-    else
-        glDisable(cap);
-    if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + REF_MAX_LIGHTS)
-        ref->light[cap - GL_LIGHT0].enabled = on;
-    else if (cap == GL_LIGHTING)
-        ref->lighting = on;
-    else if (cap == GL_NORMALIZE)
-        ref->normalize = on;
-    else if (cap == GL_RESCALE_NORMAL)
-        ref->rescale_normal = on;
-    else if (cap == GL_COLOR_MATERIAL)
-        ref_set_color_material_enabled(ref, on);
-}
-
 static const GLenum faces[3] = { GL_FRONT, GL_BACK, GL_FRONT_AND_BACK };
 static const char *face_names[3] = { "front", "back", "front_and_back" };
 static const GLenum cm_modes[5] = { GL_EMISSION, GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR,
@@ -238,11 +202,11 @@ static const char *random_light(ffl_rng *rs, ffl_rng *r, ref_state *ref, int i,
 
     /* dim enough that most sums stay below 1 and clamping is the exception */
     random_color_scaled(r, c, 0.3);
-    light_fv(ref, light, GL_AMBIENT, c);
+    mirror_lightfv(ref, light, GL_AMBIENT, c);
     random_color_scaled(r, c, 0.7);
-    light_fv(ref, light, GL_DIFFUSE, c);
+    mirror_lightfv(ref, light, GL_DIFFUSE, c);
     random_color_scaled(r, c, 0.7);
-    light_fv(ref, light, GL_SPECULAR, c);
+    mirror_lightfv(ref, light, GL_SPECULAR, c);
 
     pos[0] = ffl_rng_float(r, -10, 10);
     pos[1] = ffl_rng_float(r, -10, 10);
@@ -257,22 +221,22 @@ static const char *random_light(ffl_rng *rs, ffl_rng *r, ref_state *ref, int i,
         }
         pos[0] *= pos[3]; pos[1] *= pos[3]; pos[2] *= pos[3];
     }
-    light_fv(ref, light, GL_POSITION, pos);
+    mirror_lightfv(ref, light, GL_POSITION, pos);
 
     /* attenuation: often the default, otherwise random non-negative terms */
     if (ffl_rng_chance(rs, 0.4)) {
-        light_f(ref, light, GL_CONSTANT_ATTENUATION, 1.0f);
-        light_f(ref, light, GL_LINEAR_ATTENUATION, 0.0f);
-        light_f(ref, light, GL_QUADRATIC_ATTENUATION, 0.0f);
+        mirror_lightf(ref, light, GL_CONSTANT_ATTENUATION, 1.0f);
+        mirror_lightf(ref, light, GL_LINEAR_ATTENUATION, 0.0f);
+        mirror_lightf(ref, light, GL_QUADRATIC_ATTENUATION, 0.0f);
     } else {
         float kc = ffl_rng_chance(r, 0.2) ? 0.0f : ffl_rng_float(r, 0.1, 2);
         float kl = ffl_rng_chance(r, 0.4) ? 0.0f : ffl_rng_float(r, 0, 0.5);
         float kq = ffl_rng_chance(r, 0.5) ? 0.0f : ffl_rng_float(r, 0, 0.05);
         if (kc + kl + kq < 0.05f)
             kc = 0.5f;
-        light_f(ref, light, GL_CONSTANT_ATTENUATION, kc);
-        light_f(ref, light, GL_LINEAR_ATTENUATION, kl);
-        light_f(ref, light, GL_QUADRATIC_ATTENUATION, kq);
+        mirror_lightf(ref, light, GL_CONSTANT_ATTENUATION, kc);
+        mirror_lightf(ref, light, GL_LINEAR_ATTENUATION, kl);
+        mirror_lightf(ref, light, GL_QUADRATIC_ATTENUATION, kq);
     }
 
     if (kind == 2) {
@@ -291,19 +255,19 @@ static const char *random_light(ffl_rng *rs, ffl_rng *r, ref_state *ref, int i,
         len = sqrt(obj[0] * obj[0] + obj[1] * obj[1] + obj[2] * obj[2]);
         for (k = 0; k < 3; k++)
             dir[k] = (float)(obj[k] + len * ffl_rng_float(r, -0.3, 0.3));
-        light_fv(ref, light, GL_SPOT_DIRECTION, dir);
+        mirror_lightfv(ref, light, GL_SPOT_DIRECTION, dir);
         switch (ffl_rng_int(r, 3)) {
-        case 0: light_f(ref, light, GL_SPOT_EXPONENT, 0.0f); break;
-        case 1: light_f(ref, light, GL_SPOT_EXPONENT, ffl_rng_float(r, 0, 8)); break;
-        default: light_f(ref, light, GL_SPOT_EXPONENT, ffl_rng_float(r, 0, 128)); break;
+        case 0: mirror_lightf(ref, light, GL_SPOT_EXPONENT, 0.0f); break;
+        case 1: mirror_lightf(ref, light, GL_SPOT_EXPONENT, ffl_rng_float(r, 0, 8)); break;
+        default: mirror_lightf(ref, light, GL_SPOT_EXPONENT, ffl_rng_float(r, 0, 128)); break;
         }
         if (ffl_rng_chance(r, 0.1))
-            light_f(ref, light, GL_SPOT_CUTOFF, 90.0f);
+            mirror_lightf(ref, light, GL_SPOT_CUTOFF, 90.0f);
         else
-            light_f(ref, light, GL_SPOT_CUTOFF, ffl_rng_float(r, 2, 89));
+            mirror_lightf(ref, light, GL_SPOT_CUTOFF, ffl_rng_float(r, 0, 89));
     } else {
         /* a light that stops being a spot light keeps its direction */
-        light_f(ref, light, GL_SPOT_CUTOFF, 180.0f);
+        mirror_lightf(ref, light, GL_SPOT_CUTOFF, 180.0f);
     }
     return kind == 0 ? "directional" : kind == 1 ? "point" : "spot";
 }
@@ -321,20 +285,20 @@ static void random_material(ffl_rng *rs, ffl_rng *r, ref_state *ref)
             if (props[p] == GL_EMISSION) {
                 c[0] *= 0.3f; c[1] *= 0.3f; c[2] *= 0.3f;
             }
-            material_fv(ref, face, props[p], c);
+            mirror_materialfv(ref, face, props[p], c);
             if (f == 0 && ffl_rng_chance(r, 0.15))
-                material_fv(ref, GL_FRONT_AND_BACK, props[p], c);
+                mirror_materialfv(ref, GL_FRONT_AND_BACK, props[p], c);
         }
         if (ffl_rng_chance(r, 0.2)) {
             random_color(r, c);
-            material_fv(ref, f == 0 ? GL_FRONT : GL_BACK, GL_AMBIENT_AND_DIFFUSE, c);
+            mirror_materialfv(ref, f == 0 ? GL_FRONT : GL_BACK, GL_AMBIENT_AND_DIFFUSE, c);
         }
         switch (ffl_rng_int(rs, 5)) {
         case 0: c[0] = 0.0f; break;
         case 1: c[0] = ffl_rng_float(r, 0, 5); break;
         default: c[0] = ffl_rng_float(r, 0, 128); break;
         }
-        material_fv(ref, f == 0 ? GL_FRONT : GL_BACK, GL_SHININESS, c);
+        mirror_materialfv(ref, f == 0 ? GL_FRONT : GL_BACK, GL_SHININESS, c);
     }
 }
 
@@ -497,7 +461,7 @@ static int run_state(int state, long *vertices, long *exempt_shininess0,
                 set_modelview(&light_ops, &ref);
             }
             kind = random_light(rs, r, &ref, i, center);
-            enable(&ref, GL_LIGHT0 + i, on);
+            mirror_enable(&ref, GL_LIGHT0 + i, on);
             printf(" light%d %s", i, on ? kind : "off");
         }
     }
@@ -508,37 +472,32 @@ static int run_state(int state, long *vertices, long *exempt_shininess0,
     c[1] = ffl_rng_float(r, 0, 0.4);
     c[2] = ffl_rng_float(r, 0, 0.4);
     c[3] = 1.0f;
-    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, c);
-    ref_light_modelfv(&ref, GL_LIGHT_MODEL_AMBIENT, c);
+    mirror_light_model4f(&ref, GL_LIGHT_MODEL_AMBIENT, c[0], c[1], c[2], c[3]);
     k = ffl_rng_int(rs, 2);
-    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, k);
-    ref_light_modeli(&ref, GL_LIGHT_MODEL_LOCAL_VIEWER, k);
+    mirror_light_modeli(&ref, GL_LIGHT_MODEL_LOCAL_VIEWER, k);
     printf(" local_viewer %d", k);
     k = ffl_rng_int(rs, 2);
-    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, k);
-    ref_light_modeli(&ref, GL_LIGHT_MODEL_TWO_SIDE, k);
+    mirror_light_modeli(&ref, GL_LIGHT_MODEL_TWO_SIDE, k);
     printf(" two_side %d", k);
     k = ffl_rng_chance(rs, 0.5) ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR;
-    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, k);
-    ref_light_modeli(&ref, GL_LIGHT_MODEL_COLOR_CONTROL, k);
+    mirror_light_modeli(&ref, GL_LIGHT_MODEL_COLOR_CONTROL, k);
     printf(" %s", k == GL_SEPARATE_SPECULAR_COLOR ? "separate_specular" : "single_color");
 
     face = ffl_rng_int(rs, 3);
     mode = ffl_rng_int(rs, 5);
-    glColorMaterial(faces[face], cm_modes[mode]);
-    ref_color_material(&ref, faces[face], cm_modes[mode]);
+    mirror_color_material(&ref, faces[face], cm_modes[mode]);
     k = ffl_rng_chance(rs, 0.5);
-    enable(&ref, GL_COLOR_MATERIAL, k);
+    mirror_enable(&ref, GL_COLOR_MATERIAL, k);
     printf(" color_material %s %s %s", k ? "on" : "off", face_names[face], cm_mode_names[mode]);
 
     k = ffl_rng_chance(rs, 0.4);
-    enable(&ref, GL_NORMALIZE, k);
+    mirror_enable(&ref, GL_NORMALIZE, k);
     printf(" normalize %d", k);
     k = ffl_rng_chance(rs, 0.4);
-    enable(&ref, GL_RESCALE_NORMAL, k);
+    mirror_enable(&ref, GL_RESCALE_NORMAL, k);
     printf(" rescale_normal %d", k);
     k = ffl_rng_chance(rs, 0.92);
-    enable(&ref, GL_LIGHTING, k);
+    mirror_enable(&ref, GL_LIGHTING, k);
     printf(" lighting %d", k);
     printf("\n");
 
@@ -560,8 +519,7 @@ static int run_state(int state, long *vertices, long *exempt_shininess0,
             double obj[4];
             if (i == 0 || ffl_rng_chance(r, 0.7)) {
                 random_color(r, c);
-                glColor4f(c[0], c[1], c[2], c[3]);
-                ref_color4f(&ref, c[0], c[1], c[2], c[3]);
+                mirror_color4f(&ref, c[0], c[1], c[2], c[3]);
             }
             if (i == 0 || ffl_rng_chance(r, 0.8)) {
                 float nv[3];
@@ -577,8 +535,7 @@ static int run_state(int state, long *vertices, long *exempt_shininess0,
                     nv[1] = (float)(nv[1] / len);
                     nv[2] = (float)(nv[2] / len);
                 }
-                glNormal3f(nv[0], nv[1], nv[2]);
-                ref_normal3f(&ref, nv[0], nv[1], nv[2]);
+                mirror_normal3f(&ref, nv[0], nv[1], nv[2]);
             }
             random_vertex(r, &ref, v);
             glVertex3f(v[0], v[1], v[2]);

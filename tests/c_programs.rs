@@ -112,12 +112,12 @@ fn out_dir() -> PathBuf {
 /// shadows the library this test run just compiled.
 fn static_library() -> PathBuf {
     let mut candidates = Vec::new();
-    if let Ok(exe) = std::env::current_exe() {
-        if let Some(deps) = exe.parent() {
-            candidates.push(deps.join("libfflight.a"));
-            if let Some(profile) = deps.parent() {
-                candidates.push(profile.join("libfflight.a"));
-            }
+    if let Ok(exe) = std::env::current_exe()
+        && let Some(deps) = exe.parent()
+    {
+        candidates.push(deps.join("libfflight.a"));
+        if let Some(profile) = deps.parent() {
+            candidates.push(profile.join("libfflight.a"));
         }
     }
     candidates.push(manifest_dir().join("target/debug/libfflight.a"));
