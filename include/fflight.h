@@ -1375,6 +1375,26 @@ void glGetDoublev(GLenum pname, GLdouble *params);
  */
 const GLubyte *glGetString(GLenum name);
 
+/*
+ # Safety
+ `equation` is NULL or points to 4 values.
+ */
+void glClipPlane(GLenum plane, const GLdouble *equation);
+
+/*
+ # Safety
+ `equation` is NULL or has room for 4 values.
+ */
+void glGetClipPlane(GLenum plane, GLdouble *equation);
+
+void glShadeModel(GLenum mode);
+
+void glFrontFace(GLenum mode);
+
+void glCullFace(GLenum mode);
+
+void glPolygonMode(GLenum face, GLenum mode);
+
 #ifdef __cplusplus
 }  // extern "C"
 #endif  // __cplusplus

@@ -11,6 +11,7 @@ mod feedback;
 mod lighting;
 mod matrix;
 mod query;
+mod raster;
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 

@@ -4,4 +4,5 @@ pub mod feedback;
 pub mod lighting;
 pub mod matrix;
 pub mod query;
+pub mod raster;
 pub mod vertex;

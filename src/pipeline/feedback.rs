@@ -50,6 +50,8 @@ pub struct FeedbackBuffer {
     pub capacity: usize,
     pub values: Vec<f32>,
     pub overflowed: bool,
+    /// Set when the line stipple restarts: the next segment is a GL_LINE_RESET_TOKEN.
+    pub line_reset_pending: bool,
 }
 
 impl FeedbackBuffer {
@@ -57,9 +59,10 @@ impl FeedbackBuffer {
     pub fn restart(&mut self) {
         self.values.clear();
         self.overflowed = false;
+        self.line_reset_pending = false;
     }
 
-    fn push(&mut self, value: f32) {
+    pub fn value(&mut self, value: f32) {
         if self.values.len() < self.capacity {
             self.values.push(value);
         } else {
@@ -68,32 +71,49 @@ impl FeedbackBuffer {
     }
 
     pub fn token(&mut self, token: GLenum) {
-        self.push(token as f32);
+        self.value(token as f32);
     }
 
     pub fn pass_through(&mut self, value: f32) {
         self.token(GL_PASS_THROUGH_TOKEN);
-        self.push(value);
+        self.value(value);
+    }
+
+    /// The line stipple restarts (a new independent segment, strip or polygon outline).
+    pub fn reset_line_stipple(&mut self) {
+        self.line_reset_pending = true;
+    }
+
+    /// A segment: GL_LINE_RESET_TOKEN after a stipple restart, else GL_LINE_TOKEN.
+    pub fn line(&mut self, ends: &[FeedbackVertex; 2]) {
+        let reset = std::mem::take(&mut self.line_reset_pending);
+        self.token(if reset {
+            GL_LINE_RESET_TOKEN
+        } else {
+            GL_LINE_TOKEN
+        });
+        self.vertex(&ends[0]);
+        self.vertex(&ends[1]);
     }
 
     pub fn vertex(&mut self, vertex: &FeedbackVertex) {
         let Some(layout) = self.layout else { return };
-        self.push(vertex.window.x);
-        self.push(vertex.window.y);
+        self.value(vertex.window.x);
+        self.value(vertex.window.y);
         if layout.z {
-            self.push(vertex.window.z);
+            self.value(vertex.window.z);
         }
         if layout.w {
-            self.push(vertex.window.w);
+            self.value(vertex.window.w);
         }
         if layout.color {
             for c in vertex.color.to_array() {
-                self.push(c);
+                self.value(c);
             }
         }
         if layout.texture {
             for t in vertex.tex_coord.to_array() {
-                self.push(t);
+                self.value(t);
             }
         }
     }

@@ -1,50 +1,177 @@
-//! The vertex pipeline after lighting: primitive assembly, clipping and feedback.
+//! The vertex pipeline after lighting: primitive assembly, clipping, facing, flat shading,
+//! polygon mode and feedback (§2.6, §2.12, §2.14.1, §2.14.7, §3.5, §5.3).
 
+pub mod assembly;
+pub mod clip;
 pub mod feedback;
 pub mod vertex;
 
+use glam::Vec4;
+
 use crate::context::{Context, RenderMode};
 use crate::gl::*;
+use crate::lighting::FaceColors;
+use assembly::{Primitive, assemble};
+use clip::{ClipPlanes, PolygonVertex, clip_line, clip_triangle, point_visible};
 use feedback::FeedbackVertex;
 use vertex::ProcessedVertex;
 
+/// What feedback needs of a vertex after its colors were chosen.
+fn feedback_vertex(ctx: &Context, v: &ProcessedVertex, color: Vec4) -> FeedbackVertex {
+    FeedbackVertex {
+        window: ctx.raster.window(v.clip),
+        color,
+        tex_coord: v.tex_coord,
+    }
+}
+
 impl Context {
+    /// The enabled user clip planes, in eye coordinates.
+    pub(crate) fn clip_planes(&self) -> ClipPlanes {
+        ClipPlanes::new(
+            self.enables
+                .clip_planes
+                .iter()
+                .zip(&self.raster.clip_planes)
+                .filter(|(enabled, _)| **enabled)
+                .map(|(_, plane)| *plane)
+                .collect(),
+        )
+    }
+
+    fn flat_shading(&self) -> bool {
+        self.raster.shade_model == GL_FLAT
+    }
+
     /// Assembles the primitives of `mode` from processed vertices and sends them on (§2.6.1).
     pub(crate) fn draw_vertices(&mut self, mode: GLenum, vertices: &[ProcessedVertex]) {
         if self.render_mode != RenderMode::Feedback {
             return;
         }
-        if mode == GL_POINTS {
-            for vertex in vertices {
-                self.feedback_point(vertex);
+        let planes = self.clip_planes();
+        let mut polygon = Vec::new();
+        assemble(mode, vertices.len(), |primitive| match primitive {
+            Primitive::Point(i) => self.feedback_point(&planes, &vertices[i]),
+            Primitive::Line {
+                vertices: [a, b],
+                reset,
+            } => self.feedback_line(&planes, [&vertices[a], &vertices[b]], reset),
+            Primitive::Triangle {
+                vertices: [a, b, c],
+                boundary,
+                edge_flags,
+                reset,
+            } => {
+                let mut corners = [vertices[a], vertices[b], vertices[c]];
+                if !edge_flags {
+                    // Strips and fans draw every edge whatever the edge flags (§2.6.2).
+                    corners.iter_mut().for_each(|v| v.edge_flag = true);
+                }
+                let [a, b, c] = &corners;
+                clip_triangle(&planes, [a, b, c], boundary, &mut polygon);
+                if reset {
+                    self.feedback.reset_line_stipple();
+                }
+                self.feedback_polygon(&polygon, c);
+            }
+        });
+    }
+
+    /// A point: culled unless inside every plane; points always use the front colors.
+    fn feedback_point(&mut self, planes: &ClipPlanes, v: &ProcessedVertex) {
+        if point_visible(planes, v) {
+            let fed = feedback_vertex(self, v, v.colors.front.primary);
+            self.feedback.token(GL_POINT_TOKEN);
+            self.feedback.vertex(&fed);
+        }
+    }
+
+    /// A segment, clipped; flat shading gives both ends the provoking (second) vertex's color.
+    fn feedback_line(&mut self, planes: &ClipPlanes, ends: [&ProcessedVertex; 2], reset: bool) {
+        let Some(clipped) = clip_line(planes, ends[0], ends[1]) else {
+            return;
+        };
+        let flat = self.flat_shading().then_some(ends[1].colors.front.primary);
+        let fed =
+            clipped.map(|v| feedback_vertex(self, &v, flat.unwrap_or(v.colors.front.primary)));
+        if reset {
+            self.feedback.reset_line_stipple();
+        }
+        self.feedback.line(&fed);
+    }
+
+    /// A clipped triangle, emitted as a fan of triangles whose last vertex is the polygon's
+    /// first, each one then faced, culled, colored and drawn in its face's polygon mode.
+    fn feedback_polygon(&mut self, polygon: &[PolygonVertex], provoking: &ProcessedVertex) {
+        let n = polygon.len();
+        for i in 2..n {
+            let corners = [&polygon[i - 1], &polygon[i], &polygon[0]];
+            // Edge 0 runs corners 0 -> 1, edge 1 corners 1 -> 2 (closing the polygon), edge 2
+            // corners 2 -> 0 (the polygon's first edge).
+            let boundary = [
+                corners[0].boundary,
+                i == n - 1 && corners[1].boundary,
+                i == 2 && corners[2].boundary,
+            ];
+            self.feedback_triangle(corners.map(|c| &c.vertex), boundary, provoking);
+        }
+    }
+
+    fn feedback_triangle(
+        &mut self,
+        corners: [&ProcessedVertex; 3],
+        boundary: [bool; 3],
+        provoking: &ProcessedVertex,
+    ) {
+        let window = corners.map(|v| self.raster.window(v.clip));
+        let front = self.is_front_facing(window);
+        if self.enables.cull_face && self.culls(front) {
+            return;
+        }
+        let face_colors = |v: &ProcessedVertex| -> FaceColors {
+            if front { v.colors.front } else { v.colors.back }
+        };
+        let flat = self.flat_shading().then(|| face_colors(provoking).primary);
+        let fed: [FeedbackVertex; 3] = std::array::from_fn(|k| FeedbackVertex {
+            window: window[k],
+            color: flat.unwrap_or(face_colors(corners[k]).primary),
+            tex_coord: corners[k].tex_coord,
+        });
+        let drawn_edge = |k: usize| boundary[k] && corners[k].edge_flag;
+        match self.raster.polygon_mode[if front { 0 } else { 1 }] {
+            GL_POINT => {
+                for k in (0..3).filter(|&k| drawn_edge(k)) {
+                    self.feedback.token(GL_POINT_TOKEN);
+                    self.feedback.vertex(&fed[k]);
+                }
+            }
+            GL_LINE => {
+                // Mesa's order: the edge closing the triangle first.
+                for k in [2, 0, 1].into_iter().filter(|&k| drawn_edge(k)) {
+                    self.feedback.line(&[fed[k], fed[(k + 1) % 3]]);
+                }
+            }
+            _ => {
+                self.feedback.token(GL_POLYGON_TOKEN);
+                self.feedback.value(3.0);
+                fed.iter().for_each(|v| self.feedback.vertex(v));
             }
         }
     }
 
-    /// A point in feedback: culled unless inside the view volume and every enabled clip plane.
-    fn feedback_point(&mut self, vertex: &ProcessedVertex) {
-        if !self.point_visible(vertex) {
-            return;
-        }
-        let fed = FeedbackVertex {
-            window: self.raster.window(vertex.clip),
-            color: vertex.colors.front.primary,
-            tex_coord: vertex.tex_coord,
-        };
-        self.feedback.token(GL_POINT_TOKEN);
-        self.feedback.vertex(&fed);
+    /// Facing from the sign of the window-space area (§2.14.1): counterclockwise is positive.
+    fn is_front_facing(&self, window: [Vec4; 3]) -> bool {
+        let e = window[0] - window[2];
+        let f = window[1] - window[2];
+        let counterclockwise = e.x * f.y - e.y * f.x > 0.0;
+        counterclockwise == (self.raster.front_face == GL_CCW)
     }
 
-    fn point_visible(&self, vertex: &ProcessedVertex) -> bool {
-        let c = vertex.clip;
-        let in_volume = [c.x, c.y, c.z].iter().all(|&v| -c.w <= v && v <= c.w);
-        in_volume
-            && self
-                .enables
-                .clip_planes
-                .iter()
-                .zip(&self.raster.clip_planes)
-                .filter(|(enabled, _)| **enabled)
-                .all(|(_, plane)| plane.dot(vertex.eye.as_dvec4()) >= 0.0)
+    fn culls(&self, front: bool) -> bool {
+        match self.raster.cull_face_mode {
+            GL_FRONT => front,
+            GL_BACK => !front,
+            _ => true,
+        }
     }
 }

@@ -1,0 +1,81 @@
+//! Clip planes, shading, facing, culling and polygon modes (§2.12, §2.14.7, §3.5).
+
+use glam::DVec4;
+
+use crate::context::Context;
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+use crate::state::enables::MAX_CLIP_PLANES;
+use crate::state::material::faces;
+
+fn clip_plane_index(plane: GLenum) -> GlResult<usize> {
+    let index = plane.wrapping_sub(GL_CLIP_PLANE0) as usize;
+    if index < MAX_CLIP_PLANES {
+        Ok(index)
+    } else {
+        Err(GlError::InvalidEnum)
+    }
+}
+
+impl Context {
+    /// glClipPlane: the equation is transformed to eye coordinates by the inverse of the
+    /// current modelview matrix (§2.12).
+    pub fn clip_plane(&mut self, plane: GLenum, equation: [f64; 4]) -> GlResult {
+        self.outside_begin_end()?;
+        let index = clip_plane_index(plane)?;
+        let inverse = self.matrices.modelview.top().as_dmat4().inverse();
+        // The plane is a row vector: p_eye = p * M^-1.
+        self.raster.clip_planes[index] = inverse.transpose() * DVec4::from_array(equation);
+        Ok(())
+    }
+
+    /// glGetClipPlane: the eye-space equation.
+    pub fn get_clip_plane(&self, plane: GLenum) -> GlResult<[f64; 4]> {
+        self.outside_begin_end()?;
+        Ok(self.raster.clip_planes[clip_plane_index(plane)?].to_array())
+    }
+
+    /// glShadeModel.
+    pub fn shade_model(&mut self, mode: GLenum) -> GlResult {
+        self.outside_begin_end()?;
+        if !matches!(mode, GL_FLAT | GL_SMOOTH) {
+            return Err(GlError::InvalidEnum);
+        }
+        self.raster.shade_model = mode;
+        Ok(())
+    }
+
+    /// glFrontFace.
+    pub fn front_face(&mut self, mode: GLenum) -> GlResult {
+        self.outside_begin_end()?;
+        if !matches!(mode, GL_CW | GL_CCW) {
+            return Err(GlError::InvalidEnum);
+        }
+        self.raster.front_face = mode;
+        Ok(())
+    }
+
+    /// glCullFace.
+    pub fn cull_face(&mut self, mode: GLenum) -> GlResult {
+        self.outside_begin_end()?;
+        faces(mode)?;
+        self.raster.cull_face_mode = mode;
+        Ok(())
+    }
+
+    /// glPolygonMode.
+    pub fn polygon_mode(&mut self, face: GLenum, mode: GLenum) -> GlResult {
+        self.outside_begin_end()?;
+        let [front, back] = faces(face)?;
+        if !matches!(mode, GL_POINT | GL_LINE | GL_FILL) {
+            return Err(GlError::InvalidEnum);
+        }
+        if front {
+            self.raster.polygon_mode[0] = mode;
+        }
+        if back {
+            self.raster.polygon_mode[1] = mode;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,212 @@
+//! Clipping (§2.12): points, segments and triangles against the view volume
+//! (-w <= x, y, z <= w) and the enabled user clip planes (in eye coordinates). Attributes
+//! of the new vertices (positions, both faces' colors, texture coordinates) are
+//! interpolated linearly in clip space. Planes are taken in the order Mesa's draw module
+//! uses (x, y, z, then user planes), which fixes the order of a clipped polygon's vertices.
+
+use glam::{DVec4, Vec4};
+
+use super::vertex::ProcessedVertex;
+use crate::lighting::{FaceColors, LitVertex};
+
+/// The view-volume planes as clip-space plane equations: w - x, w + x, w - y, w + y, w + z, w - z.
+const VIEW_VOLUME: [Vec4; 6] = [
+    Vec4::new(-1.0, 0.0, 0.0, 1.0),
+    Vec4::new(1.0, 0.0, 0.0, 1.0),
+    Vec4::new(0.0, -1.0, 0.0, 1.0),
+    Vec4::new(0.0, 1.0, 0.0, 1.0),
+    Vec4::new(0.0, 0.0, 1.0, 1.0),
+    Vec4::new(0.0, 0.0, -1.0, 1.0),
+];
+
+/// The planes a vertex is tested against: the view volume and the enabled user planes.
+pub struct ClipPlanes {
+    user: Vec<DVec4>,
+}
+
+impl ClipPlanes {
+    /// `user`: the eye-space equations of the enabled user clip planes, in plane order.
+    pub fn new(user: Vec<DVec4>) -> ClipPlanes {
+        ClipPlanes { user }
+    }
+
+    fn count(&self) -> usize {
+        VIEW_VOLUME.len() + self.user.len()
+    }
+
+    /// The signed distance of `v` from plane `plane`: negative outside.
+    fn distance(&self, plane: usize, v: &ProcessedVertex) -> f32 {
+        match VIEW_VOLUME.get(plane) {
+            Some(equation) => equation.dot(v.clip),
+            None => self.user[plane - VIEW_VOLUME.len()].dot(v.eye.as_dvec4()) as f32,
+        }
+    }
+
+    /// One bit per plane that `v` is outside of.
+    pub fn outside_mask(&self, v: &ProcessedVertex) -> u32 {
+        (0..self.count())
+            .filter(|&plane| {
+                let distance = self.distance(plane, v);
+                distance < 0.0 || distance.is_nan()
+            })
+            .fold(0, |mask, plane| mask | 1 << plane)
+    }
+
+    fn is_user_plane(plane: usize) -> bool {
+        plane >= VIEW_VOLUME.len()
+    }
+}
+
+fn lerp4(t: f32, from: Vec4, to: Vec4) -> Vec4 {
+    from + t * (to - from)
+}
+
+fn lerp_face(t: f32, from: &FaceColors, to: &FaceColors) -> FaceColors {
+    FaceColors {
+        primary: lerp4(t, from.primary, to.primary),
+        secondary: lerp4(t, from.secondary, to.secondary),
+    }
+}
+
+/// The vertex at `t` from `from` to `to` (edge flag: the caller decides).
+fn interpolate(t: f32, from: &ProcessedVertex, to: &ProcessedVertex) -> ProcessedVertex {
+    ProcessedVertex {
+        eye: lerp4(t, from.eye, to.eye),
+        clip: lerp4(t, from.clip, to.clip),
+        colors: LitVertex {
+            front: lerp_face(t, &from.colors.front, &to.colors.front),
+            back: lerp_face(t, &from.colors.back, &to.colors.back),
+        },
+        tex_coord: lerp4(t, from.tex_coord, to.tex_coord),
+        edge_flag: from.edge_flag,
+    }
+}
+
+/// Whether a point is inside every plane.
+pub fn point_visible(planes: &ClipPlanes, v: &ProcessedVertex) -> bool {
+    planes.outside_mask(v) == 0
+}
+
+/// Clips a segment: `None` when nothing of it is inside, else its visible part.
+pub fn clip_line(
+    planes: &ClipPlanes,
+    a: &ProcessedVertex,
+    b: &ProcessedVertex,
+) -> Option<[ProcessedVertex; 2]> {
+    let (mask_a, mask_b) = (planes.outside_mask(a), planes.outside_mask(b));
+    if mask_a & mask_b != 0 {
+        return None;
+    }
+    if mask_a | mask_b == 0 {
+        return Some([*a, *b]);
+    }
+    // How much of the segment each end loses: the largest cut over the planes.
+    let (mut cut_a, mut cut_b) = (0.0f32, 0.0f32);
+    for plane in (0..planes.count()).filter(|p| (mask_a | mask_b) & 1 << p != 0) {
+        let (da, db) = (planes.distance(plane, a), planes.distance(plane, b));
+        if !da.is_finite() || !db.is_finite() {
+            return None;
+        }
+        if da < 0.0 {
+            cut_a = cut_a.max(da / (da - db));
+        }
+        if db < 0.0 {
+            cut_b = cut_b.max(db / (db - da));
+        }
+        if cut_a + cut_b >= 1.0 {
+            return None;
+        }
+    }
+    let new_a = if mask_a != 0 {
+        interpolate(cut_a, a, b)
+    } else {
+        *a
+    };
+    let new_b = if mask_b != 0 {
+        interpolate(cut_b, b, a)
+    } else {
+        *b
+    };
+    Some([new_a, new_b])
+}
+
+/// A vertex of a clipped polygon and whether the edge that starts at it is a boundary edge.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PolygonVertex {
+    pub vertex: ProcessedVertex,
+    pub boundary: bool,
+}
+
+/// Clips a triangle (Sutherland-Hodgman, plane by plane) into a convex polygon, written to
+/// `polygon` (emptied first); fewer than three vertices means nothing is visible.
+pub fn clip_triangle(
+    planes: &ClipPlanes,
+    triangle: [&ProcessedVertex; 3],
+    boundary: [bool; 3],
+    polygon: &mut Vec<PolygonVertex>,
+) {
+    polygon.clear();
+    let masks = triangle.map(|v| planes.outside_mask(v));
+    polygon.extend((0..3).map(|i| PolygonVertex {
+        vertex: *triangle[i],
+        boundary: boundary[i],
+    }));
+    if masks[0] & masks[1] & masks[2] != 0 {
+        polygon.clear();
+        return;
+    }
+    let planes_crossed = masks[0] | masks[1] | masks[2];
+    let mut output = Vec::with_capacity(polygon.len() + 2);
+    for plane in (0..planes.count()).filter(|p| planes_crossed & 1 << p != 0) {
+        if polygon.len() < 3 {
+            break;
+        }
+        output.clear();
+        let distances: Vec<f32> = polygon
+            .iter()
+            .map(|p| planes.distance(plane, &p.vertex))
+            .collect();
+        if distances.iter().any(|d| !d.is_finite()) {
+            polygon.clear();
+            return;
+        }
+        let n = polygon.len();
+        for i in 0..n {
+            let (current, next) = (&polygon[i], &polygon[(i + 1) % n]);
+            let (d_current, d_next) = (distances[i], distances[(i + 1) % n]);
+            if d_current >= 0.0 {
+                output.push(*current);
+            }
+            if (d_current >= 0.0) != (d_next >= 0.0) {
+                // Interpolate from the end nearer the plane, for precision.
+                let mut vertex = if d_current.abs() < d_next.abs() {
+                    interpolate(
+                        d_current / (d_current - d_next),
+                        &current.vertex,
+                        &next.vertex,
+                    )
+                } else {
+                    interpolate(d_next / (d_next - d_current), &next.vertex, &current.vertex)
+                };
+                let leaving = d_current >= 0.0;
+                let boundary = if leaving && ClipPlanes::is_user_plane(plane) {
+                    // The new edge along a user clip plane is drawn; along the view volume not.
+                    vertex.edge_flag = true;
+                    true
+                } else {
+                    vertex.edge_flag = if leaving {
+                        false
+                    } else {
+                        current.vertex.edge_flag
+                    };
+                    current.boundary
+                };
+                output.push(PolygonVertex { vertex, boundary });
+            }
+        }
+        std::mem::swap(polygon, &mut output);
+    }
+    if polygon.len() < 3 {
+        polygon.clear();
+    }
+}
