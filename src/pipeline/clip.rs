@@ -138,13 +138,14 @@ pub struct PolygonVertex {
 }
 
 /// Clips a triangle (Sutherland-Hodgman, plane by plane) into a convex polygon, written to
-/// `polygon` (emptied first); fewer than three vertices means nothing is visible.
+/// `polygon` (emptied first); fewer than three vertices means nothing is visible. Returns
+/// whether the triangle crossed a plane (else `polygon` is the triangle itself).
 pub fn clip_triangle(
     planes: &ClipPlanes,
     triangle: [&ProcessedVertex; 3],
     boundary: [bool; 3],
     polygon: &mut Vec<PolygonVertex>,
-) {
+) -> bool {
     polygon.clear();
     let masks = triangle.map(|v| planes.outside_mask(v));
     polygon.extend((0..3).map(|i| PolygonVertex {
@@ -153,9 +154,12 @@ pub fn clip_triangle(
     }));
     if masks[0] & masks[1] & masks[2] != 0 {
         polygon.clear();
-        return;
+        return true;
     }
     let planes_crossed = masks[0] | masks[1] | masks[2];
+    if planes_crossed == 0 {
+        return false;
+    }
     let mut output = Vec::with_capacity(polygon.len() + 2);
     for plane in (0..planes.count()).filter(|p| planes_crossed & 1 << p != 0) {
         if polygon.len() < 3 {
@@ -168,7 +172,7 @@ pub fn clip_triangle(
             .collect();
         if distances.iter().any(|d| !d.is_finite()) {
             polygon.clear();
-            return;
+            return true;
         }
         let n = polygon.len();
         for i in 0..n {
@@ -209,4 +213,5 @@ pub fn clip_triangle(
     if polygon.len() < 3 {
         polygon.clear();
     }
+    true
 }

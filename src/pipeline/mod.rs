@@ -68,11 +68,11 @@ impl Context {
                     corners.iter_mut().for_each(|v| v.edge_flag = true);
                 }
                 let [a, b, c] = &corners;
-                clip_triangle(&planes, [a, b, c], boundary, &mut polygon);
-                if reset {
-                    self.feedback.reset_line_stipple();
+                if clip_triangle(&planes, [a, b, c], boundary, &mut polygon) {
+                    self.feedback_polygon(&polygon, c);
+                } else {
+                    self.feedback_triangle([a, b, c], boundary, c, reset);
                 }
-                self.feedback_polygon(&polygon, c);
             }
         });
     }
@@ -101,7 +101,7 @@ impl Context {
     }
 
     /// A clipped triangle, emitted as a fan of triangles whose last vertex is the polygon's
-    /// first, each one then faced, culled, colored and drawn in its face's polygon mode.
+    /// first; the first of them restarts the line stipple, as in Mesa.
     fn feedback_polygon(&mut self, polygon: &[PolygonVertex], provoking: &ProcessedVertex) {
         let n = polygon.len();
         for i in 2..n {
@@ -113,15 +113,18 @@ impl Context {
                 i == n - 1 && corners[1].boundary,
                 i == 2 && corners[2].boundary,
             ];
-            self.feedback_triangle(corners.map(|c| &c.vertex), boundary, provoking);
+            self.feedback_triangle(corners.map(|c| &c.vertex), boundary, provoking, i == 2);
         }
     }
 
+    /// One triangle: faced, culled, colored, then drawn in its face's polygon mode. `reset`
+    /// restarts the line stipple of its outline.
     fn feedback_triangle(
         &mut self,
         corners: [&ProcessedVertex; 3],
         boundary: [bool; 3],
         provoking: &ProcessedVertex,
+        reset: bool,
     ) {
         let window = corners.map(|v| self.raster.window(v.clip));
         let front = self.is_front_facing(window);
@@ -146,6 +149,9 @@ impl Context {
                 }
             }
             GL_LINE => {
+                if reset {
+                    self.feedback.reset_line_stipple();
+                }
                 // Mesa's order: the edge closing the triangle first.
                 for k in [2, 0, 1].into_iter().filter(|&k| drawn_edge(k)) {
                     self.feedback.line(&[fed[k], fed[(k + 1) % 3]]);
