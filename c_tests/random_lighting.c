@@ -312,13 +312,26 @@ static void random_material(ffl_rng *rs, ffl_rng *r, ref_state *ref)
  *    back shininess: Mesa evaluates the power and gets 0^0 = 0 where
  *    n.h <= 0 < n.l; the reference takes 0^0 = 1, the limit of x^s as s goes
  *    to 0 and what Mesa's own shininess-0 path gives.
- * Both only touch the specular term, but the whole color is exempted. */
+ * Both only touch the specular term, but the whole color is exempted.
+ *  - vertex_w: a vertex given with w != 1 is lit by Mesa at (x, y, z)
+ *    instead of (x/w, y/w, z/w); it shows with a positional light or a
+ *    local viewer (see osmesa_diff_vertex_w.c). */
 static const char *osmesa_exemption(const ref_state *ref, const double *obj)
 {
     ref_light_terms t[REF_MAX_LIGHTS];
     double v3[3], n[3];
     int i, shininess_zero_state;
-    if (!ref->lighting || ref->material[0].shininess != 0.0)
+    if (!ref->lighting)
+        return NULL;
+    if (obj[3] != 1.0) {
+        int uses_position = ref->local_viewer;
+        for (i = 0; i < REF_MAX_LIGHTS; i++)
+            if (ref->light[i].enabled && ref->light[i].position[3] != 0.0)
+                uses_position = 1;
+        if (uses_position)
+            return "vertex_w";
+    }
+    if (ref->material[0].shininess != 0.0)
         return NULL;
     shininess_zero_state = !(ref->two_side && ref->material[1].shininess != 0.0);
     ref_vertex_terms(ref, obj, 0, v3, n, t);
@@ -414,7 +427,7 @@ static void dump_ref(const ref_state *s)
 #endif
 
 static int run_state(int state, long *vertices, long *exempt_shininess0,
-                     long *exempt_zero_pow_zero)
+                     long *exempt_zero_pow_zero, long *exempt_vertex_w)
 {
     ffl_rng rng, structure_rng, *r = &rng, *rs = &structure_rng;
     ref_state ref;
@@ -538,8 +551,16 @@ static int run_state(int state, long *vertices, long *exempt_shininess0,
                 mirror_normal3f(&ref, nv[0], nv[1], nv[2]);
             }
             random_vertex(r, &ref, v);
-            glVertex3f(v[0], v[1], v[2]);
-            obj[0] = v[0]; obj[1] = v[1]; obj[2] = v[2]; obj[3] = 1.0;
+            if (ffl_rng_chance(r, 0.08)) {
+                /* the same point, given with w != 1 */
+                float w = ffl_rng_float(r, 0.5, 2), vw[4];
+                vw[0] = v[0] * w; vw[1] = v[1] * w; vw[2] = v[2] * w; vw[3] = w;
+                glVertex4fv(vw);
+                obj[0] = vw[0]; obj[1] = vw[1]; obj[2] = vw[2]; obj[3] = vw[3];
+            } else {
+                glVertex3f(v[0], v[1], v[2]);
+                obj[0] = v[0]; obj[1] = v[1]; obj[2] = v[2]; obj[3] = 1.0;
+            }
             ref_lit_color(&ref, obj, 0, ref_color[i], secondary);
             exempt[i] = osmesa_exemption(&ref, obj);
             tolerance[i] = color_tolerance(&ref, obj);
@@ -576,8 +597,10 @@ static int run_state(int state, long *vertices, long *exempt_shininess0,
                 printf(" osmesa-exempt=%s", exempt[i]);
                 if (exempt[i][0] == 's')
                     ++*exempt_shininess0;
-                else
+                else if (exempt[i][0] == 'z')
                     ++*exempt_zero_pow_zero;
+                else
+                    ++*exempt_vertex_w;
             }
             ffl_pfv("xyz", fb + 1, 3);
             ffl_pfv("rgba", fb + 4, 4);
@@ -595,7 +618,7 @@ static int run_state(int state, long *vertices, long *exempt_shininess0,
 int main(int argc, char **argv)
 {
     int first = 0, count = NUM_STATES, s, failed = 0;
-    long vertices = 0, shininess0 = 0, zero_pow_zero = 0;
+    long vertices = 0, shininess0 = 0, zero_pow_zero = 0, vertex_w = 0;
     if (argc > 1) {
         first = atoi(argv[1]);
         count = argc > 2 ? atoi(argv[2]) : 1;
@@ -603,8 +626,9 @@ int main(int argc, char **argv)
     ffl_test_init();
     glViewport(0, 0, 64, 64);
     for (s = first; s < first + count; s++)
-        failed |= run_state(s, &vertices, &shininess0, &zero_pow_zero);
-    printf("summary states %d vertices %ld osmesa_exempt shininess0 %ld zero_pow_zero %ld\n", count,
-           vertices, shininess0, zero_pow_zero);
+        failed |= run_state(s, &vertices, &shininess0, &zero_pow_zero, &vertex_w);
+    printf("summary states %d vertices %ld osmesa_exempt shininess0 %ld zero_pow_zero %ld "
+           "vertex_w %ld\n",
+           count, vertices, shininess0, zero_pow_zero, vertex_w);
     return failed;
 }

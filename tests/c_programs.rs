@@ -649,6 +649,7 @@ c_programs!(
     osmesa_diff_shininess0_attenuation,
     osmesa_diff_zero_pow_zero,
     osmesa_diff_get_integer,
+    osmesa_diff_vertex_w,
     system_gl_header,
     spot_cutoff,
     local_viewer,
