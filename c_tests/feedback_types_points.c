@@ -8,6 +8,7 @@
  * volume (left, right, above, behind the near plane, beyond the far plane)
  * are culled and leave nothing; glVertex2f, glVertex3f and glVertex4f with
  * w != 1. The return value of glRenderMode is the number of values written.
+ * Flat shading leaves points' colors alone.
  */
 #include "ffl_test.h"
 
@@ -75,6 +76,18 @@ int main(void)
         failed |= ffl_print_feedback(names[t], buf, n, types[t]);
         printf("%s untouched_after_count %d\n", names[t], n < 256 && buf[n] == -12345.0f);
     }
+
+    /* Flat shading changes nothing for points: each point is its own
+     * provoking vertex and keeps its color. */
+    glShadeModel(GL_FLAT);
+    glFeedbackBuffer(256, GL_3D_COLOR, buf);
+    glRenderMode(GL_FEEDBACK);
+    draw();
+    n = glRenderMode(GL_RENDER);
+    printf("flat count %d\n", (int)n);
+    if (n >= 0 && n <= 256)
+        failed |= ffl_print_feedback("flat", buf, n, GL_3D_COLOR);
+    glShadeModel(GL_SMOOTH);
 
     /* Lighting on: GL_3D_COLOR reports the lit color. */
     glEnable(GL_LIGHTING);
