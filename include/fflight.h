@@ -1182,6 +1182,16 @@ GLint glRenderMode(GLenum mode);
 
 void glPassThrough(GLfloat token);
 
+/*
+ Every command has finished when it returns: there is nothing to flush.
+ */
+void glFlush(void);
+
+/*
+ Every command has finished when it returns: there is nothing to wait for.
+ */
+void glFinish(void);
+
 void glLightf(GLenum light, GLenum pname, GLfloat param);
 
 void glLighti(GLenum light, GLenum pname, GLint param);

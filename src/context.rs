@@ -99,6 +99,12 @@ impl Context {
         self.primitive.is_some()
     }
 
+    /// glFlush / glFinish: every command completes before it returns, so only the
+    /// glBegin/glEnd check remains.
+    pub fn finish(&self) -> GlResult {
+        self.outside_begin_end()
+    }
+
     /// GL_INVALID_OPERATION between glBegin and glEnd, for the commands the spec forbids there.
     pub(crate) fn outside_begin_end(&self) -> GlResult {
         if self.inside_begin_end() {

@@ -55,3 +55,15 @@ pub extern "C" fn glRenderMode(mode: GLenum) -> GLint {
 pub extern "C" fn glPassThrough(token: GLfloat) {
     with_context(|ctx| ctx.pass_through(token))
 }
+
+/// Every command has finished when it returns: there is nothing to flush.
+#[unsafe(no_mangle)]
+pub extern "C" fn glFlush() {
+    with_context(|ctx| ctx.finish())
+}
+
+/// Every command has finished when it returns: there is nothing to wait for.
+#[unsafe(no_mangle)]
+pub extern "C" fn glFinish() {
+    with_context(|ctx| ctx.finish())
+}
