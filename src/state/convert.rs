@@ -5,10 +5,11 @@ pub fn int_to_color(c: i32) -> f32 {
     ((2.0 * c as f64 + 1.0) / 4_294_967_295.0) as f32
 }
 
-/// A float color component mapped back to a signed 32-bit integer (§6.1.2), clamped.
+/// A float color component mapped back to a signed 32-bit integer (§6.1.2), clamped. The
+/// mapping puts 0.0 exactly halfway between -1 and 0; ties round up, so 0.0 reads back as 0.
 pub fn color_to_int(f: f32) -> i32 {
     let value = ((4_294_967_295.0 * f as f64) - 1.0) / 2.0;
-    value.round().clamp(i32::MIN as f64, i32::MAX as f64) as i32
+    (value + 0.5).floor().clamp(i32::MIN as f64, i32::MAX as f64) as i32
 }
 
 /// Any other float state as an integer: rounded to the nearest (§6.1.2), clamped.
@@ -90,6 +91,7 @@ mod tests {
     fn colors_round_trip_through_integers() {
         assert_eq!(color_to_int(1.0), i32::MAX);
         assert_eq!(color_to_int(-1.0), i32::MIN);
+        assert_eq!(color_to_int(0.0), 0);
         assert_eq!(float_to_int(2.5), 3);
         assert_eq!(float_to_int(-0.4), 0);
     }
