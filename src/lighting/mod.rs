@@ -6,12 +6,16 @@
 //!  = a_m·Σ att·spot·a_l + d_m·Σ att·spot·(n⊙L)·d_l + s_m·Σ att·spot·f·(n⊙h)^s·s_l`,
 //! so the material, which color material may replace per vertex, multiplies three sums once
 //! instead of entering every light's products.
+//!
+//! The evaluation runs in double precision from the single-precision state: high specular
+//! and spot exponents magnify rounding (x^128 multiplies a relative error by 128), and this
+//! path is the reference a faster single-precision engine is measured against.
 
 mod prepared;
 
 pub use prepared::{PreparedFace, PreparedLight, PreparedLighting};
 
-use glam::{Vec3, Vec4};
+use glam::{DVec3, DVec4, Vec4};
 
 /// The colors lighting gives one face of a vertex (§2.14.1): primary and secondary, clamped.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -32,8 +36,8 @@ pub struct LitVertex {
 /// rescaled or normalized as enabled), and the current colors.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct VertexInput {
-    pub eye: Vec4,
-    pub normal: Vec3,
+    pub eye: DVec4,
+    pub normal: DVec3,
     pub color: Vec4,
     pub secondary_color: Vec4,
 }
@@ -45,9 +49,9 @@ fn clamp01(c: Vec4) -> Vec4 {
 /// The per-face sums of light colors, weighted by the light-dependent factors.
 #[derive(Clone, Copy, Default)]
 struct LightSums {
-    ambient: Vec3,
-    diffuse: [Vec3; 2],
-    specular: [Vec3; 2],
+    ambient: DVec3,
+    diffuse: [DVec3; 2],
+    specular: [DVec3; 2],
 }
 
 impl PreparedLighting {
@@ -74,12 +78,12 @@ impl PreparedLighting {
         LitVertex { front, back }
     }
 
-    fn light_sums(&self, position: Vec3, normal: Vec3) -> LightSums {
+    fn light_sums(&self, position: DVec3, normal: DVec3) -> LightSums {
         let mut sums = LightSums::default();
         let eye_direction = if self.local_viewer {
             (-position).normalize_or_zero()
         } else {
-            Vec3::Z
+            DVec3::Z
         };
         for light in self.lights() {
             let (to_light, attenuation) = if light.positional {
@@ -106,7 +110,7 @@ impl PreparedLighting {
             let n_dot_h = normal.dot(half);
             // The back face sees the negated normal (§2.14.1).
             let faces = if self.two_side { 2 } else { 1 };
-            for (face, sign) in [1.0f32, -1.0].into_iter().enumerate().take(faces) {
+            for (face, sign) in [1.0f64, -1.0].into_iter().enumerate().take(faces) {
                 let diffuse = (sign * n_dot_l).max(0.0);
                 if diffuse > 0.0 {
                     sums.diffuse[face] += (weight * diffuse) * light.diffuse;
@@ -121,20 +125,21 @@ impl PreparedLighting {
 
     fn face_color(&self, face: usize, sums: &LightSums, color: Vec4) -> FaceColors {
         let material = self.faces[face].material_for(color);
-        let ambient = material.ambient.truncate();
-        let unlit =
-            material.emission.truncate() + ambient * self.scene_ambient + ambient * sums.ambient;
-        let diffuse = material.diffuse.truncate() * sums.diffuse[face];
-        let specular = material.specular.truncate() * sums.specular[face];
+        let rgb = |c: Vec4| c.truncate().as_dvec3();
+        let ambient = rgb(material.ambient);
+        let unlit = rgb(material.emission) + ambient * (self.scene_ambient + sums.ambient);
+        let diffuse = rgb(material.diffuse) * sums.diffuse[face];
+        let specular = rgb(material.specular) * sums.specular[face];
+        let color = |c: DVec3, alpha: f32| clamp01(c.as_vec3().extend(alpha));
         let alpha = material.diffuse.w;
         if self.separate_specular {
             FaceColors {
-                primary: clamp01((unlit + diffuse).extend(alpha)),
-                secondary: clamp01(specular.extend(0.0)),
+                primary: color(unlit + diffuse, alpha),
+                secondary: color(specular, 0.0),
             }
         } else {
             FaceColors {
-                primary: clamp01((unlit + diffuse + specular).extend(alpha)),
+                primary: color(unlit + diffuse + specular, alpha),
                 secondary: Vec4::ZERO,
             }
         }
@@ -142,7 +147,7 @@ impl PreparedLighting {
 }
 
 /// A homogeneous eye-space point as a 3D point (§2.14.1 treats V as homogeneous).
-fn homogenize(eye: Vec4) -> Vec3 {
+fn homogenize(eye: DVec4) -> DVec3 {
     if eye.w != 0.0 && eye.w != 1.0 {
         eye.truncate() / eye.w
     } else {

@@ -1,6 +1,6 @@
 //! Per-state lighting constants, computed once when the lighting state changes.
 
-use glam::{Vec3, Vec4};
+use glam::{DVec3, Vec4};
 
 use crate::state::light::{Light, MAX_LIGHTS};
 use crate::state::light_model::LightModel;
@@ -9,55 +9,56 @@ use crate::state::material::{ColorMaterial, Material, MaterialMask};
 /// One enabled light, in the form the equation uses.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PreparedLight {
-    pub ambient: Vec3,
-    pub diffuse: Vec3,
-    pub specular: Vec3,
+    pub ambient: DVec3,
+    pub diffuse: DVec3,
+    pub specular: DVec3,
     /// Whether the light has a position (w != 0) rather than a direction.
     pub positional: bool,
     /// Positional: the eye-space position divided by w. Directional: the unit direction to it.
-    pub position: Vec3,
+    pub position: DVec3,
     /// For a directional light and an infinite viewer: the constant unit half vector.
-    pub infinite_half: Vec3,
+    pub infinite_half: DVec3,
     /// Unit eye-space spot direction.
-    pub spot_direction: Vec3,
+    pub spot_direction: DVec3,
     /// cos(cutoff), or `None` for the 180-degree cutoff (no spot).
-    pub spot_cos_cutoff: Option<f32>,
-    pub spot_exponent: f32,
+    pub spot_cos_cutoff: Option<f64>,
+    pub spot_exponent: f64,
     /// (constant, linear, quadratic), or `None` when attenuation is the identity (1, 0, 0).
-    pub attenuation: Option<Vec3>,
+    pub attenuation: Option<DVec3>,
 }
 
 impl PreparedLight {
     fn new(light: &Light) -> PreparedLight {
-        let p = light.eye_position;
+        let p = light.eye_position.as_dvec4();
         let positional = p.w != 0.0;
         let position = if positional {
             p.truncate() / p.w
         } else {
             p.truncate().normalize_or_zero()
         };
-        let attenuation = Vec3::new(
-            light.constant_attenuation,
-            light.linear_attenuation,
-            light.quadratic_attenuation,
+        let attenuation = DVec3::new(
+            light.constant_attenuation.into(),
+            light.linear_attenuation.into(),
+            light.quadratic_attenuation.into(),
         );
+        let rgb = |c: Vec4| c.truncate().as_dvec3();
         PreparedLight {
-            ambient: light.ambient.truncate(),
-            diffuse: light.diffuse.truncate(),
-            specular: light.specular.truncate(),
+            ambient: rgb(light.ambient),
+            diffuse: rgb(light.diffuse),
+            specular: rgb(light.specular),
             positional,
             position,
-            infinite_half: (position + Vec3::Z).normalize_or_zero(),
-            spot_direction: light.eye_spot_direction.normalize_or_zero(),
+            infinite_half: (position + DVec3::Z).normalize_or_zero(),
+            spot_direction: light.eye_spot_direction.as_dvec3().normalize_or_zero(),
             spot_cos_cutoff: (light.spot_cutoff != 180.0)
-                .then(|| (light.spot_cutoff as f64).to_radians().cos() as f32),
-            spot_exponent: light.spot_exponent,
-            attenuation: (positional && attenuation != Vec3::X).then_some(attenuation),
+                .then(|| f64::from(light.spot_cutoff).to_radians().cos()),
+            spot_exponent: light.spot_exponent.into(),
+            attenuation: (positional && attenuation != DVec3::X).then_some(attenuation),
         }
     }
 
     /// att_i of §2.14.1 at `distance` from a positional light.
-    pub fn attenuation_at(&self, distance: f32) -> f32 {
+    pub fn attenuation_at(&self, distance: f64) -> f64 {
         match self.attenuation {
             Some(k) => 1.0 / (k.x + k.y * distance + k.z * distance * distance),
             None => 1.0,
@@ -65,7 +66,7 @@ impl PreparedLight {
     }
 
     /// spot_i of §2.14.1 for the unit vector `to_light` from the vertex to the light.
-    pub fn spot_factor(&self, to_light: Vec3) -> f32 {
+    pub fn spot_factor(&self, to_light: DVec3) -> f64 {
         match self.spot_cos_cutoff {
             None => 1.0,
             Some(cos_cutoff) => {
@@ -85,7 +86,7 @@ impl PreparedLight {
 pub struct PreparedFace {
     pub material: Material,
     pub tracked: MaterialMask,
-    pub shininess: f32,
+    pub shininess: f64,
 }
 
 impl PreparedFace {
@@ -106,7 +107,7 @@ pub struct PreparedLighting {
     lights: [Option<PreparedLight>; MAX_LIGHTS],
     light_count: usize,
     pub faces: [PreparedFace; 2],
-    pub scene_ambient: Vec3,
+    pub scene_ambient: DVec3,
     pub local_viewer: bool,
     pub two_side: bool,
     pub separate_specular: bool,
@@ -130,14 +131,14 @@ impl PreparedLighting {
         let face = |i: usize| PreparedFace {
             material: materials[i],
             tracked: tracked[i],
-            shininess: materials[i].shininess,
+            shininess: materials[i].shininess.into(),
         };
         PreparedLighting {
             enabled,
             lights: prepared,
             light_count,
             faces: [face(0), face(1)],
-            scene_ambient: model.ambient.truncate(),
+            scene_ambient: model.ambient.truncate().as_dvec3(),
             local_viewer: model.local_viewer,
             two_side: model.two_side,
             separate_specular: model.separate_specular(),

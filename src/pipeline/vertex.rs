@@ -1,7 +1,7 @@
 //! Per-vertex transformation (§2.11) and lighting: object coordinates in, eye and clip
 //! coordinates, lit colors and the transformed texture coordinate out.
 
-use glam::{Mat3, Mat4, Vec3, Vec4};
+use glam::{DMat3, DMat4, DVec3, Mat4, Vec3, Vec4};
 
 use crate::lighting::{LitVertex, PreparedLighting, VertexInput};
 
@@ -38,16 +38,17 @@ pub struct ProcessedVertex {
     pub edge_flag: bool,
 }
 
-/// The matrices a vertex goes through, derived once per matrix or enable change.
+/// The matrices a vertex goes through, derived once per matrix or enable change. Vertices
+/// are transformed in double precision from GL's single-precision matrices.
 #[derive(Clone, Debug, PartialEq)]
 pub struct VertexTransform {
-    pub modelview: Mat4,
-    pub projection: Mat4,
+    pub modelview: DMat4,
+    pub projection: DMat4,
     pub texture: Mat4,
     /// The inverse transpose of the modelview's upper-left 3x3 (§2.11.3).
-    pub normal_matrix: Mat3,
+    pub normal_matrix: DMat3,
     /// GL_RESCALE_NORMAL's factor, when rescaling applies (enabled, GL_NORMALIZE off).
-    pub normal_rescale: Option<f32>,
+    pub normal_rescale: Option<f64>,
     pub normalize: bool,
 }
 
@@ -59,7 +60,8 @@ impl VertexTransform {
         normalize: bool,
         rescale_normal: bool,
     ) -> VertexTransform {
-        let inverse = Mat3::from_mat4(modelview).inverse();
+        let modelview = modelview.as_dmat4();
+        let inverse = DMat3::from_mat4(modelview).inverse();
         let normal_rescale = (rescale_normal && !normalize).then(|| {
             // §2.11.3: 1 / sqrt(m31² + m32² + m33²) of the inverse's third row.
             let length_squared = inverse.row(2).length_squared();
@@ -71,7 +73,7 @@ impl VertexTransform {
         });
         VertexTransform {
             modelview,
-            projection,
+            projection: projection.as_dmat4(),
             texture,
             normal_matrix: inverse.transpose(),
             normal_rescale,
@@ -80,8 +82,8 @@ impl VertexTransform {
     }
 
     /// The eye-space normal (§2.11.3): transformed, then rescaled or normalized as enabled.
-    pub fn eye_normal(&self, normal: Vec3) -> Vec3 {
-        let eye = self.normal_matrix * normal;
+    pub fn eye_normal(&self, normal: Vec3) -> DVec3 {
+        let eye = self.normal_matrix * normal.as_dvec3();
         if self.normalize {
             eye.normalize_or_zero()
         } else if let Some(scale) = self.normal_rescale {
@@ -103,20 +105,20 @@ impl DerivedState {
     /// Transforms and lights one vertex given in object coordinates.
     pub fn process(&self, object: Vec4, attribs: &CurrentAttribs) -> ProcessedVertex {
         let transform = &self.transform;
-        let eye = transform.modelview * object;
+        let eye = transform.modelview * object.as_dvec4();
         let colors = self.lighting.shade(&VertexInput {
             eye,
             normal: if self.lighting.enabled {
                 transform.eye_normal(attribs.normal)
             } else {
-                attribs.normal
+                DVec3::ZERO
             },
             color: attribs.color,
             secondary_color: attribs.secondary_color,
         });
         ProcessedVertex {
-            eye,
-            clip: transform.projection * eye,
+            eye: eye.as_vec4(),
+            clip: (transform.projection * eye).as_vec4(),
             colors,
             tex_coord: transform.texture * attribs.tex_coord,
             edge_flag: attribs.edge_flag,
