@@ -9,7 +9,9 @@ pub fn int_to_color(c: i32) -> f32 {
 /// mapping puts 0.0 exactly halfway between -1 and 0; ties round up, so 0.0 reads back as 0.
 pub fn color_to_int(f: f32) -> i32 {
     let value = ((4_294_967_295.0 * f as f64) - 1.0) / 2.0;
-    (value + 0.5).floor().clamp(i32::MIN as f64, i32::MAX as f64) as i32
+    (value + 0.5)
+        .floor()
+        .clamp(i32::MIN as f64, i32::MAX as f64) as i32
 }
 
 /// Any other float state as an integer: rounded to the nearest (§6.1.2), clamped.
