@@ -499,9 +499,7 @@ macro_rules! assert_approx_eq {
         let got = $crate::common::Approx::values(&$got);
         let want = $crate::common::Approx::values(&$want);
         let tolerance: f64 = $tolerance;
-        #[allow(unused_mut)]
-        let mut context = String::new();
-        $(context = format!($($message)+);)?
+        let context: String = ::std::string::String::new() $(+ &format!($($message)+))?;
         assert!(
             $crate::common::approx_equal(&got, &want, tolerance),
             "assert_approx_eq!({}, {}) {}\n   got: {:?}\n  want: {:?}\n   tolerance: {:e}",
