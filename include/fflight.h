@@ -714,6 +714,78 @@ typedef struct FflContext FflContext;
 #define GL_MAX_ELEMENTS_INDICES 33001
 #endif
 
+#ifndef GL_POINT_SIZE
+#define GL_POINT_SIZE 2833
+#endif
+
+#ifndef GL_POINT_SIZE_RANGE
+#define GL_POINT_SIZE_RANGE 2834
+#endif
+
+#ifndef GL_LINE_WIDTH
+#define GL_LINE_WIDTH 2849
+#endif
+
+#ifndef GL_LINE_WIDTH_RANGE
+#define GL_LINE_WIDTH_RANGE 2850
+#endif
+
+#ifndef GL_DEPTH_CLEAR_VALUE
+#define GL_DEPTH_CLEAR_VALUE 2931
+#endif
+
+#ifndef GL_COLOR_CLEAR_VALUE
+#define GL_COLOR_CLEAR_VALUE 3106
+#endif
+
+#ifndef GL_PERSPECTIVE_CORRECTION_HINT
+#define GL_PERSPECTIVE_CORRECTION_HINT 3152
+#endif
+
+#ifndef GL_POINT_SMOOTH_HINT
+#define GL_POINT_SMOOTH_HINT 3153
+#endif
+
+#ifndef GL_LINE_SMOOTH_HINT
+#define GL_LINE_SMOOTH_HINT 3154
+#endif
+
+#ifndef GL_POLYGON_SMOOTH_HINT
+#define GL_POLYGON_SMOOTH_HINT 3155
+#endif
+
+#ifndef GL_FOG_HINT
+#define GL_FOG_HINT 3156
+#endif
+
+#ifndef GL_DONT_CARE
+#define GL_DONT_CARE 4352
+#endif
+
+#ifndef GL_FASTEST
+#define GL_FASTEST 4353
+#endif
+
+#ifndef GL_NICEST
+#define GL_NICEST 4354
+#endif
+
+#ifndef GL_DEPTH_BUFFER_BIT
+#define GL_DEPTH_BUFFER_BIT 256
+#endif
+
+#ifndef GL_ACCUM_BUFFER_BIT
+#define GL_ACCUM_BUFFER_BIT 512
+#endif
+
+#ifndef GL_STENCIL_BUFFER_BIT
+#define GL_STENCIL_BUFFER_BIT 1024
+#endif
+
+#ifndef GL_COLOR_BUFFER_BIT
+#define GL_COLOR_BUFFER_BIT 16384
+#endif
+
 
 
 
@@ -1404,6 +1476,41 @@ void glFrontFace(GLenum mode);
 void glCullFace(GLenum mode);
 
 void glPolygonMode(GLenum face, GLenum mode);
+
+void glPointSize(GLfloat size);
+
+void glLineWidth(GLfloat width);
+
+void glHint(GLenum target, GLenum mode);
+
+void glClearColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
+
+void glClearDepth(GLclampd depth);
+
+/*
+ There is no framebuffer: the mask is checked and nothing else happens.
+ */
+void glClear(GLbitfield mask);
+
+void glRectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2);
+
+void glRectd(GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2);
+
+void glRecti(GLint x1, GLint y1, GLint x2, GLint y2);
+
+void glRects(GLshort x1, GLshort y1, GLshort x2, GLshort y2);
+
+/*
+ # Safety
+ `v1` and `v2` are NULL or point to 2 values each.
+ */
+void glRectfv(const GLfloat *v1, const GLfloat *v2);
+
+/*
+ # Safety
+ `v1` and `v2` are NULL or point to 2 values each.
+ */
+void glRectdv(const GLdouble *v1, const GLdouble *v2);
 
 #ifdef __cplusplus
 }  // extern "C"

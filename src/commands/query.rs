@@ -118,6 +118,23 @@ impl Context {
             GL_POLYGON_MODE => {
                 StateValue::Ints(self.raster.polygon_mode.iter().map(|&m| m as i32).collect())
             }
+            GL_POINT_SIZE => floats(&[self.raster.point_size]),
+            GL_LINE_WIDTH => floats(&[self.raster.line_width]),
+            // Points and lines are not rasterized: any size is as good as any other.
+            GL_POINT_SIZE_RANGE | GL_LINE_WIDTH_RANGE => floats(&[1.0, 1024.0]),
+            GL_COLOR_CLEAR_VALUE => normalized(&self.raster.clear_color.to_array()),
+            GL_DEPTH_CLEAR_VALUE => StateValue::Normalized(vec![self.raster.clear_depth]),
+            GL_PERSPECTIVE_CORRECTION_HINT
+            | GL_POINT_SMOOTH_HINT
+            | GL_LINE_SMOOTH_HINT
+            | GL_POLYGON_SMOOTH_HINT
+            | GL_FOG_HINT => enumeration(
+                self.raster
+                    .hints
+                    .iter()
+                    .find(|(t, _)| *t == pname)
+                    .map_or(GL_DONT_CARE, |h| h.1),
+            ),
             GL_RENDER_MODE => enumeration(match self.render_mode {
                 RenderMode::Render => GL_RENDER,
                 RenderMode::Feedback => GL_FEEDBACK,
