@@ -574,6 +574,10 @@ typedef struct FflContext FflContext;
 #define GL_COLOR_ARRAY 32886
 #endif
 
+#ifndef GL_INDEX_ARRAY
+#define GL_INDEX_ARRAY 32887
+#endif
+
 #ifndef GL_TEXTURE_COORD_ARRAY
 #define GL_TEXTURE_COORD_ARRAY 32888
 #endif
@@ -803,6 +807,80 @@ typedef struct FflContext FflContext;
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/*
+ `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+ */
+void glVertexPointer(GLint size, GLenum type_, GLsizei stride, const void *ptr);
+
+/*
+ `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+ */
+void glNormalPointer(GLenum type_, GLsizei stride, const void *ptr);
+
+/*
+ `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+ */
+void glColorPointer(GLint size, GLenum type_, GLsizei stride, const void *ptr);
+
+/*
+ `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+ */
+void glTexCoordPointer(GLint size, GLenum type_, GLsizei stride, const void *ptr);
+
+/*
+ `ptr` (GLbooleans) must stay valid, holding the elements later draws use, until it is
+ replaced.
+ */
+void glEdgeFlagPointer(GLsizei stride, const void *ptr);
+
+void glEnableClientState(GLenum array);
+
+void glDisableClientState(GLenum array);
+
+/*
+ `pointer` must stay valid, holding the elements later draws use, until it is replaced.
+ */
+void glInterleavedArrays(GLenum format, GLsizei stride, const void *pointer);
+
+/*
+ # Safety
+ `params` is NULL or has room for one pointer.
+ */
+void glGetPointerv(GLenum pname, void **params);
+
+/*
+ # Safety
+ The enabled arrays' pointers must hold element `i`.
+ */
+void glArrayElement(GLint i);
+
+/*
+ # Safety
+ The enabled arrays' pointers must hold elements `first..first + count`.
+ */
+void glDrawArrays(GLenum mode, GLint first, GLsizei count);
+
+/*
+ # Safety
+ `indices` is NULL or points to `count` indices of `type_`; the enabled arrays' pointers
+ must hold every element they reference.
+ */
+void glDrawElements(GLenum mode, GLsizei count, GLenum type_, const void *indices);
+
+/*
+ `start` and `end` are not trusted: what is read is decided by the indices alone.
+
+ # Safety
+ `indices` is NULL or points to `count` indices of `type_`; the enabled arrays' pointers
+ must hold every element they reference.
+ */
+void glDrawRangeElements(GLenum mode,
+                         GLuint start,
+                         GLuint end,
+                         GLsizei count,
+                         GLenum type_,
+                         const void *indices);
 
 void glColor3b(GLbyte r, GLbyte g, GLbyte b);
 
@@ -1226,7 +1304,8 @@ struct FflContext *fflGetCurrentContext(void);
 
 /*
  Destroys `context`. A context current on the calling thread is released first; one current
- on another thread is not destroyed (GL_FALSE, GL_INVALID_OPERATION).
+ on another thread, or the thread's default context, is not destroyed (GL_FALSE,
+ GL_INVALID_OPERATION).
 
  # Safety
  `context` is NULL or a live pointer from `fflCreateContext`; it must not be used after.

@@ -46,6 +46,7 @@ pub struct Context {
     /// The address glFeedbackBuffer was given: only the C layer writes through it.
     pub(crate) feedback_address: usize,
     pub(crate) primitive: Option<PrimitiveInProgress>,
+    pub(crate) arrays: crate::state::arrays::VertexArrays,
     derived: Option<DerivedState>,
 }
 
@@ -72,6 +73,7 @@ impl Context {
             feedback: FeedbackBuffer::default(),
             feedback_address: 0,
             primitive: None,
+            arrays: Default::default(),
             derived: None,
         }
     }

@@ -154,6 +154,7 @@ pub const GL_MAX_CLIP_PLANES: GLenum = 0x0D32;
 pub const GL_VERTEX_ARRAY: GLenum = 0x8074;
 pub const GL_NORMAL_ARRAY: GLenum = 0x8075;
 pub const GL_COLOR_ARRAY: GLenum = 0x8076;
+pub const GL_INDEX_ARRAY: GLenum = 0x8077;
 pub const GL_TEXTURE_COORD_ARRAY: GLenum = 0x8078;
 pub const GL_EDGE_FLAG_ARRAY: GLenum = 0x8079;
 pub const GL_VERTEX_ARRAY_SIZE: GLenum = 0x807A;

@@ -5,6 +5,7 @@
 //! panics from crossing into C.
 #![allow(unsafe_code)]
 
+mod arrays;
 mod attribs;
 mod context;
 mod feedback;

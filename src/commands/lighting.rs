@@ -218,6 +218,10 @@ impl Context {
     /// glEnable / glDisable.
     pub fn set_capability(&mut self, cap: GLenum, enabled: bool) -> GlResult {
         self.outside_begin_end()?;
+        if self.arrays.is_enabled(cap).is_some() {
+            // Client-state arrays, which Mesa accepts here as glEnableClientState.
+            return self.client_state(cap, enabled);
+        }
         match Capability::of(cap)? {
             Capability::Lighting => self.enables.lighting = enabled,
             Capability::Light(i) => self.lights[i].enabled = enabled,
@@ -238,6 +242,9 @@ impl Context {
     /// glIsEnabled.
     pub fn is_enabled(&self, cap: GLenum) -> GlResult<bool> {
         self.outside_begin_end()?;
+        if let Some(enabled) = self.arrays.is_enabled(cap) {
+            return Ok(enabled);
+        }
         Ok(match Capability::of(cap)? {
             Capability::Lighting => self.enables.lighting,
             Capability::Light(i) => self.lights[i].enabled,

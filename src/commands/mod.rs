@@ -1,5 +1,6 @@
 //! Every GL command as a method on `Context`, grouped like the specification.
 
+pub mod arrays;
 pub mod feedback;
 pub mod lighting;
 pub mod matrix;

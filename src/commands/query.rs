@@ -5,6 +5,7 @@ use std::ffi::CStr;
 use crate::context::{Context, RenderMode};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
+use crate::state::arrays::ArrayKind;
 use crate::state::convert::{color_to_int, float_to_int};
 use crate::state::enables::{Capability, MAX_CLIP_PLANES};
 use crate::state::light::MAX_LIGHTS;
@@ -143,6 +144,28 @@ impl Context {
             GL_FEEDBACK_BUFFER_TYPE => {
                 enumeration(self.feedback.layout.map_or(GL_2D, |layout| layout.kind))
             }
+            GL_VERTEX_ARRAY
+            | GL_NORMAL_ARRAY
+            | GL_COLOR_ARRAY
+            | GL_INDEX_ARRAY
+            | GL_TEXTURE_COORD_ARRAY
+            | GL_EDGE_FLAG_ARRAY => {
+                StateValue::Bools(vec![self.arrays.is_enabled(pname) == Some(true)])
+            }
+            GL_VERTEX_ARRAY_SIZE => int(self.arrays.get(ArrayKind::Vertex).size),
+            GL_VERTEX_ARRAY_TYPE => enumeration(self.arrays.get(ArrayKind::Vertex).component_type),
+            GL_VERTEX_ARRAY_STRIDE => int(self.arrays.get(ArrayKind::Vertex).stride),
+            GL_NORMAL_ARRAY_TYPE => enumeration(self.arrays.get(ArrayKind::Normal).component_type),
+            GL_NORMAL_ARRAY_STRIDE => int(self.arrays.get(ArrayKind::Normal).stride),
+            GL_COLOR_ARRAY_SIZE => int(self.arrays.get(ArrayKind::Color).size),
+            GL_COLOR_ARRAY_TYPE => enumeration(self.arrays.get(ArrayKind::Color).component_type),
+            GL_COLOR_ARRAY_STRIDE => int(self.arrays.get(ArrayKind::Color).stride),
+            GL_TEXTURE_COORD_ARRAY_SIZE => int(self.arrays.get(ArrayKind::TexCoord).size),
+            GL_TEXTURE_COORD_ARRAY_TYPE => {
+                enumeration(self.arrays.get(ArrayKind::TexCoord).component_type)
+            }
+            GL_TEXTURE_COORD_ARRAY_STRIDE => int(self.arrays.get(ArrayKind::TexCoord).stride),
+            GL_EDGE_FLAG_ARRAY_STRIDE => int(self.arrays.get(ArrayKind::EdgeFlag).stride),
             _ => return Err(GlError::InvalidEnum),
         })
     }

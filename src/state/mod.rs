@@ -1,5 +1,6 @@
 //! GL state and its validation, one module per group of state. No pointers here.
 
+pub mod arrays;
 pub mod convert;
 pub mod enables;
 pub mod light;

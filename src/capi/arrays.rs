@@ -1,0 +1,211 @@
+//! Vertex arrays (§2.8): glVertexPointer, glNormalPointer, glColorPointer,
+//! glTexCoordPointer, glEdgeFlagPointer, glEnableClientState, glDisableClientState,
+//! glInterleavedArrays, glGetPointerv, glArrayElement, glDrawArrays, glDrawElements,
+//! glDrawRangeElements.
+//!
+//! The pointer commands only store the address. A draw reads, for each enabled array, the
+//! bytes of exactly the elements its indices reference (from the smallest to the largest
+//! index actually used), never more: glDrawRangeElements' start and end are not trusted.
+//! What cannot be checked is whether the application's arrays really hold those elements
+//! (GL makes that the application's duty: a glDrawArrays count larger than the arrays, or
+//! an index past their end, reads past them as it would in any GL); a NULL pointer,
+//! however, is caught: GL_INVALID_OPERATION, nothing is drawn.
+
+use std::ffi::c_void;
+
+use super::with_context;
+use crate::commands::arrays::{ArraySources, ElementIndices};
+use crate::context::Context;
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+use crate::state::arrays::ByteSpan;
+
+/// The enabled arrays' bytes at `spans`, starting with element `base`.
+///
+/// # Safety
+/// Each span must lie in memory that stays readable for `'a` (the application's arrays
+/// hold the elements the draw uses).
+unsafe fn sources<'a>(base: usize, spans: &[Option<ByteSpan>; 5]) -> ArraySources<'a> {
+    let mut sources = ArraySources::new(base);
+    for (bytes, span) in sources.bytes.iter_mut().zip(spans) {
+        if let Some(span) = span {
+            // SAFETY: the caller guarantees the span is readable; `VertexArrays::spans`
+            // rejected NULL addresses and lengths beyond isize::MAX.
+            *bytes = unsafe { std::slice::from_raw_parts(span.address as *const u8, span.len) };
+        }
+    }
+    sources
+}
+
+/// Draws `indices` from the enabled arrays: reads exactly the bytes they reference.
+///
+/// # Safety
+/// The enabled arrays' pointers must hold every element `indices` references.
+unsafe fn draw(ctx: &mut Context, mode: GLenum, indices: &ElementIndices) -> GlResult {
+    match ctx.array_spans(indices)? {
+        // SAFETY: forwarded from the caller.
+        Some((base, spans)) => {
+            ctx.draw_arrays_from(mode, &unsafe { sources(base, &spans) }, indices)
+        }
+        // Nothing is read; the call still validates as a draw.
+        None => ctx.draw_arrays_from(mode, &ArraySources::default(), indices),
+    }
+}
+
+/// `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+#[unsafe(no_mangle)]
+pub extern "C" fn glVertexPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+    with_context(|ctx| ctx.vertex_pointer(size, type_, stride, ptr as usize))
+}
+
+/// `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+#[unsafe(no_mangle)]
+pub extern "C" fn glNormalPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+    with_context(|ctx| ctx.normal_pointer(type_, stride, ptr as usize))
+}
+
+/// `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+#[unsafe(no_mangle)]
+pub extern "C" fn glColorPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+    with_context(|ctx| ctx.color_pointer(size, type_, stride, ptr as usize))
+}
+
+/// `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexCoordPointer(
+    size: GLint,
+    type_: GLenum,
+    stride: GLsizei,
+    ptr: *const c_void,
+) {
+    with_context(|ctx| ctx.tex_coord_pointer(size, type_, stride, ptr as usize))
+}
+
+/// `ptr` (GLbooleans) must stay valid, holding the elements later draws use, until it is
+/// replaced.
+#[unsafe(no_mangle)]
+pub extern "C" fn glEdgeFlagPointer(stride: GLsizei, ptr: *const c_void) {
+    with_context(|ctx| ctx.edge_flag_pointer(stride, ptr as usize))
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEnableClientState(array: GLenum) {
+    with_context(|ctx| ctx.client_state(array, true))
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glDisableClientState(array: GLenum) {
+    with_context(|ctx| ctx.client_state(array, false))
+}
+
+/// `pointer` must stay valid, holding the elements later draws use, until it is replaced.
+#[unsafe(no_mangle)]
+pub extern "C" fn glInterleavedArrays(format: GLenum, stride: GLsizei, pointer: *const c_void) {
+    with_context(|ctx| ctx.interleaved_arrays(format, stride, pointer as usize))
+}
+
+/// # Safety
+/// `params` is NULL or has room for one pointer.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetPointerv(pname: GLenum, params: *mut *mut c_void) {
+    with_context(|ctx| {
+        let address = ctx.get_pointer(pname)?;
+        if params.is_null() {
+            return Err(GlError::InvalidValue);
+        }
+        // SAFETY: the caller guarantees room for one pointer at a non-NULL `params`.
+        unsafe { params.write_unaligned(address as *mut c_void) };
+        Ok(())
+    })
+}
+
+/// # Safety
+/// The enabled arrays' pointers must hold element `i`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glArrayElement(i: GLint) {
+    with_context(|ctx| {
+        let index = ctx.check_array_element(i)?;
+        let spans = ctx.vertex_arrays().spans(index, index)?;
+        // SAFETY: forwarded from the caller.
+        let sources = unsafe { sources(index, &spans) };
+        ctx.array_element_from(index, &sources)
+    })
+}
+
+/// # Safety
+/// The enabled arrays' pointers must hold elements `first..first + count`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) {
+    with_context(|ctx| {
+        let indices = ctx.check_draw_arrays(mode, first, count)?;
+        // SAFETY: forwarded from the caller.
+        unsafe { draw(ctx, mode, &indices) }
+    })
+}
+
+/// Reads `size` bytes of indices at `indices`: NULL is GL_INVALID_OPERATION when there are
+/// any to read.
+///
+/// # Safety
+/// A non-NULL `indices` must point to `size` readable bytes.
+unsafe fn read_indices<'a>(indices: *const c_void, size: usize) -> GlResult<&'a [u8]> {
+    if size == 0 {
+        Ok(&[])
+    } else if indices.is_null() {
+        Err(GlError::InvalidOperation)
+    } else {
+        // SAFETY: the caller guarantees `size` readable bytes; `size` is at most
+        // i32::MAX * 4, well below isize::MAX.
+        Ok(unsafe { std::slice::from_raw_parts(indices.cast::<u8>(), size) })
+    }
+}
+
+/// # Safety
+/// `indices` is NULL or points to `count` indices of `type_`; the enabled arrays' pointers
+/// must hold every element they reference.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glDrawElements(
+    mode: GLenum,
+    count: GLsizei,
+    type_: GLenum,
+    indices: *const c_void,
+) {
+    with_context(|ctx| {
+        let size = ctx.check_draw_elements(mode, count, type_)?;
+        // SAFETY: forwarded from the caller.
+        let bytes = unsafe { read_indices(indices, size)? };
+        let indices = ElementIndices::Listed {
+            index_type: type_,
+            bytes,
+        };
+        // SAFETY: forwarded from the caller.
+        unsafe { draw(ctx, mode, &indices) }
+    })
+}
+
+/// `start` and `end` are not trusted: what is read is decided by the indices alone.
+///
+/// # Safety
+/// `indices` is NULL or points to `count` indices of `type_`; the enabled arrays' pointers
+/// must hold every element they reference.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glDrawRangeElements(
+    mode: GLenum,
+    start: GLuint,
+    end: GLuint,
+    count: GLsizei,
+    type_: GLenum,
+    indices: *const c_void,
+) {
+    with_context(|ctx| {
+        let size = ctx.check_draw_range_elements(mode, start, end, count, type_)?;
+        // SAFETY: forwarded from the caller.
+        let bytes = unsafe { read_indices(indices, size)? };
+        let indices = ElementIndices::Listed {
+            index_type: type_,
+            bytes,
+        };
+        // SAFETY: forwarded from the caller.
+        unsafe { draw(ctx, mode, &indices) }
+    })
+}

@@ -1,0 +1,423 @@
+//! Vertex arrays (§2.8): the pointer commands, glEnableClientState, glInterleavedArrays,
+//! glGetPointerv, glArrayElement, glDrawArrays, glDrawElements and glDrawRangeElements.
+//!
+//! A draw happens in three steps, so that only the C layer touches the application's memory:
+//! 1. `check_draw_arrays` / `check_draw_elements` / `check_draw_range_elements` validate the
+//!    call (GL errors) and say what the indices are;
+//! 2. the C layer reads the indices, and `array_spans` says which bytes of each enabled array
+//!    the indices actually reference (never more; glDrawRangeElements' start and end are not
+//!    trusted); the C layer turns those spans into slices;
+//! 3. `draw_arrays_from` decodes the referenced elements, runs each vertex through
+//!    `DerivedState::process` (the path glVertex takes) and hands the vertices to primitive
+//!    assembly.
+//!
+//! Rust callers skip step 2: they pass the bytes of their arrays in an `ArraySources` (the
+//! addresses given to the pointer commands are then only what glGetPointerv returns).
+
+use glam::{Vec3, Vec4};
+
+use crate::context::Context;
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+use crate::pipeline::vertex::CurrentAttribs;
+use crate::state::arrays::{ArrayKind, ByteSpan, ClientArray, VertexArrays};
+
+/// The size of one index of glDrawElements' `type`; `None` for an invalid type.
+pub fn index_size(index_type: GLenum) -> Option<usize> {
+    match index_type {
+        GL_UNSIGNED_BYTE => Some(1),
+        GL_UNSIGNED_SHORT => Some(2),
+        GL_UNSIGNED_INT => Some(4),
+        _ => None,
+    }
+}
+
+/// The array elements a draw uses, in order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ElementIndices<'a> {
+    /// glDrawArrays: `first`, `first + 1`, ..., `count` of them.
+    Sequential { first: usize, count: usize },
+    /// glDrawElements: indices of `index_type` (GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT or
+    /// GL_UNSIGNED_INT) in native byte order, at any alignment; a partial index at the end
+    /// is ignored.
+    Listed { index_type: GLenum, bytes: &'a [u8] },
+}
+
+impl ElementIndices<'_> {
+    /// How many vertices the draw has.
+    pub fn len(&self) -> usize {
+        match *self {
+            ElementIndices::Sequential { count, .. } => count,
+            ElementIndices::Listed { index_type, bytes } => {
+                bytes.len() / index_size(index_type).unwrap_or(usize::MAX)
+            }
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Calls `f` with each index, in order.
+    pub fn for_each(&self, mut f: impl FnMut(usize)) {
+        match *self {
+            ElementIndices::Sequential { first, count } => (first..).take(count).for_each(f),
+            ElementIndices::Listed { index_type, bytes } => match index_type {
+                GL_UNSIGNED_BYTE => bytes.iter().for_each(|&i| f(i as usize)),
+                GL_UNSIGNED_SHORT => bytes
+                    .chunks_exact(2)
+                    .for_each(|c| f(u16::from_ne_bytes([c[0], c[1]]) as usize)),
+                GL_UNSIGNED_INT => bytes
+                    .chunks_exact(4)
+                    .for_each(|c| f(u32::from_ne_bytes([c[0], c[1], c[2], c[3]]) as usize)),
+                _ => {}
+            },
+        }
+    }
+
+    /// The smallest and the largest index; `None` when there are none.
+    pub fn range(&self) -> Option<(usize, usize)> {
+        match *self {
+            ElementIndices::Sequential { count: 0, .. } => None,
+            ElementIndices::Sequential { first, count } => {
+                Some((first, first.saturating_add(count - 1)))
+            }
+            ElementIndices::Listed { .. } => {
+                let mut range: Option<(usize, usize)> = None;
+                self.for_each(|i| {
+                    range = Some(range.map_or((i, i), |(lo, hi)| (lo.min(i), hi.max(i))));
+                });
+                range
+            }
+        }
+    }
+}
+
+/// The bytes of the enabled arrays that a draw reads: `bytes[kind as usize]` starts with
+/// element `base` of that array and holds every element the draw uses. Arrays that are not
+/// enabled are not read.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ArraySources<'a> {
+    pub base: usize,
+    pub bytes: [&'a [u8]; 5],
+}
+
+impl<'a> ArraySources<'a> {
+    /// Sources whose slices start with element `base`.
+    pub fn new(base: usize) -> ArraySources<'a> {
+        ArraySources {
+            base,
+            bytes: [&[]; 5],
+        }
+    }
+
+    /// These sources with `bytes` for the array `kind`.
+    pub fn with(mut self, kind: ArrayKind, bytes: &'a [u8]) -> ArraySources<'a> {
+        self.bytes[kind as usize] = bytes;
+        self
+    }
+}
+
+/// What the enabled arrays give one element; `None` for an array that is not enabled.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Element {
+    position: Option<Vec4>,
+    normal: Option<Vec3>,
+    color: Option<Vec4>,
+    tex_coord: Option<Vec4>,
+    edge_flag: Option<bool>,
+}
+
+impl Element {
+    /// The attributes a glVertex would see after this element's glNormal, glColor ... calls.
+    fn attribs(&self, current: &CurrentAttribs) -> CurrentAttribs {
+        CurrentAttribs {
+            normal: self.normal.unwrap_or(current.normal),
+            color: self.color.unwrap_or(current.color),
+            tex_coord: self.tex_coord.unwrap_or(current.tex_coord),
+            edge_flag: self.edge_flag.unwrap_or(current.edge_flag),
+            ..*current
+        }
+    }
+}
+
+/// Decodes elements of the enabled arrays from sources checked to hold them.
+struct ArrayReader<'a> {
+    arrays: [Option<(&'a ClientArray, &'a [u8])>; 5],
+    base: usize,
+}
+
+impl<'a> ArrayReader<'a> {
+    /// GL_INVALID_OPERATION unless every enabled array's bytes hold elements `first..=last`.
+    fn new(
+        arrays: &'a VertexArrays,
+        sources: &ArraySources<'a>,
+        first: usize,
+        last: usize,
+    ) -> GlResult<ArrayReader<'a>> {
+        let mut reader = ArrayReader {
+            arrays: [None; 5],
+            base: sources.base,
+        };
+        if first < sources.base {
+            return Err(GlError::InvalidOperation);
+        }
+        for (kind, array) in arrays.enabled() {
+            let bytes = sources.bytes[kind as usize];
+            match array.span_len(sources.base, last) {
+                Some(len) if len <= bytes.len() => {}
+                _ => return Err(GlError::InvalidOperation),
+            }
+            reader.arrays[kind as usize] = Some((array, bytes));
+        }
+        Ok(reader)
+    }
+
+    fn read(&self, kind: ArrayKind, index: usize) -> Option<[f32; 4]> {
+        let (array, bytes) = self.arrays[kind as usize]?;
+        Some(array.read(kind, bytes, self.base, index))
+    }
+
+    fn element(&self, index: usize) -> Element {
+        Element {
+            position: self.read(ArrayKind::Vertex, index).map(Vec4::from_array),
+            normal: self
+                .read(ArrayKind::Normal, index)
+                .map(|n| Vec3::new(n[0], n[1], n[2])),
+            color: self.read(ArrayKind::Color, index).map(Vec4::from_array),
+            tex_coord: self.read(ArrayKind::TexCoord, index).map(Vec4::from_array),
+            edge_flag: self.read(ArrayKind::EdgeFlag, index).map(|e| e[0] != 0.0),
+        }
+    }
+}
+
+/// GL_INVALID_ENUM unless `mode` is a primitive (§2.6.1).
+fn check_mode(mode: GLenum) -> GlResult {
+    if mode > GL_POLYGON {
+        Err(GlError::InvalidEnum)
+    } else {
+        Ok(())
+    }
+}
+
+impl Context {
+    /// The vertex array state.
+    pub fn vertex_arrays(&self) -> &VertexArrays {
+        &self.arrays
+    }
+
+    /// glVertexPointer. `address` is the application's pointer (0 for NULL): only the C
+    /// layer reads through it. Like Mesa, the pointer commands are accepted between glBegin
+    /// and glEnd (GL 1.5 §2.6.3 leaves the error optional).
+    pub fn vertex_pointer(
+        &mut self,
+        size: i32,
+        component_type: GLenum,
+        stride: i32,
+        address: usize,
+    ) -> GlResult {
+        self.arrays
+            .set_pointer(ArrayKind::Vertex, size, component_type, stride, address)
+    }
+
+    /// glNormalPointer.
+    pub fn normal_pointer(
+        &mut self,
+        component_type: GLenum,
+        stride: i32,
+        address: usize,
+    ) -> GlResult {
+        self.arrays
+            .set_pointer(ArrayKind::Normal, 3, component_type, stride, address)
+    }
+
+    /// glColorPointer.
+    pub fn color_pointer(
+        &mut self,
+        size: i32,
+        component_type: GLenum,
+        stride: i32,
+        address: usize,
+    ) -> GlResult {
+        self.arrays
+            .set_pointer(ArrayKind::Color, size, component_type, stride, address)
+    }
+
+    /// glTexCoordPointer.
+    pub fn tex_coord_pointer(
+        &mut self,
+        size: i32,
+        component_type: GLenum,
+        stride: i32,
+        address: usize,
+    ) -> GlResult {
+        self.arrays
+            .set_pointer(ArrayKind::TexCoord, size, component_type, stride, address)
+    }
+
+    /// glEdgeFlagPointer: the flags are GLbooleans.
+    pub fn edge_flag_pointer(&mut self, stride: i32, address: usize) -> GlResult {
+        self.arrays
+            .set_pointer(ArrayKind::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, address)
+    }
+
+    /// glEnableClientState / glDisableClientState. GL_INDEX_ARRAY is accepted and only
+    /// stored (fflight has no color index mode).
+    pub fn client_state(&mut self, array: GLenum, enabled: bool) -> GlResult {
+        self.arrays.set_enabled(array, enabled)
+    }
+
+    /// glInterleavedArrays (table 2.5).
+    pub fn interleaved_arrays(&mut self, format: GLenum, stride: i32, address: usize) -> GlResult {
+        self.arrays.set_interleaved(format, stride, address)
+    }
+
+    /// glGetPointerv: an array's address, or the feedback buffer's.
+    pub fn get_pointer(&self, pname: GLenum) -> GlResult<usize> {
+        self.outside_begin_end()?;
+        match ArrayKind::of_pointer_name(pname) {
+            Some(kind) => Ok(self.arrays.get(kind).address),
+            None if pname == GL_FEEDBACK_BUFFER_POINTER => Ok(self.feedback_address),
+            None => Err(GlError::InvalidEnum),
+        }
+    }
+
+    /// glArrayElement's checks: a negative index is GL_INVALID_VALUE (GL leaves it
+    /// undefined; it would read before the arrays). Legal between glBegin and glEnd.
+    pub fn check_array_element(&self, index: i32) -> GlResult<usize> {
+        usize::try_from(index).map_err(|_| GlError::InvalidValue)
+    }
+
+    /// glDrawArrays' checks, in Mesa's order: glBegin/glEnd, count, mode. A negative
+    /// `first` is GL_INVALID_VALUE (GL leaves it undefined, Mesa reads before the arrays).
+    pub fn check_draw_arrays(
+        &self,
+        mode: GLenum,
+        first: i32,
+        count: i32,
+    ) -> GlResult<ElementIndices<'static>> {
+        self.outside_begin_end()?;
+        let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
+        check_mode(mode)?;
+        let first = usize::try_from(first).map_err(|_| GlError::InvalidValue)?;
+        Ok(ElementIndices::Sequential { first, count })
+    }
+
+    /// glDrawElements' checks, in Mesa's order: glBegin/glEnd, count, mode, type. Returns
+    /// how many bytes of indices the draw reads.
+    pub fn check_draw_elements(
+        &self,
+        mode: GLenum,
+        count: i32,
+        index_type: GLenum,
+    ) -> GlResult<usize> {
+        self.outside_begin_end()?;
+        let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
+        check_mode(mode)?;
+        let size = index_size(index_type).ok_or(GlError::InvalidEnum)?;
+        Ok(count * size)
+    }
+
+    /// glDrawRangeElements' checks: `end < start` first (Mesa's order), then glDrawElements'.
+    /// `start` and `end` are a hint only: indices outside them are drawn, and what is read
+    /// is decided by the indices themselves.
+    pub fn check_draw_range_elements(
+        &self,
+        mode: GLenum,
+        start: u32,
+        end: u32,
+        count: i32,
+        index_type: GLenum,
+    ) -> GlResult<usize> {
+        self.outside_begin_end()?;
+        if end < start {
+            return Err(GlError::InvalidValue);
+        }
+        self.check_draw_elements(mode, count, index_type)
+    }
+
+    /// Which bytes of each enabled array a draw of `indices` reads, and the first index they
+    /// start with; `None` when the draw reads nothing (no indices, or the vertex array is
+    /// disabled: then no vertex is made, §2.8). A NULL pointer among the enabled arrays is
+    /// GL_INVALID_OPERATION: GL leaves it undefined, fflight draws nothing.
+    pub fn array_spans(
+        &self,
+        indices: &ElementIndices,
+    ) -> GlResult<Option<(usize, [Option<ByteSpan>; 5])>> {
+        let Some((first, last)) = indices.range() else {
+            return Ok(None);
+        };
+        if !self.arrays.get(ArrayKind::Vertex).enabled {
+            return Ok(None);
+        }
+        Ok(Some((first, self.arrays.spans(first, last)?)))
+    }
+
+    /// glArrayElement (§2.8) from the arrays' bytes: the same as the glEdgeFlag,
+    /// glTexCoord, glColor, glNormal and glVertex calls of the enabled arrays, so the
+    /// current attributes become the element's (and an enabled color material follows the
+    /// color). Legal between glBegin and glEnd, where the vertex joins the primitive.
+    pub fn array_element_from(&mut self, index: usize, sources: &ArraySources) -> GlResult {
+        let arrays = self.arrays;
+        let element = ArrayReader::new(&arrays, sources, index, index)?.element(index);
+        if let Some(flag) = element.edge_flag {
+            self.edge_flag(flag);
+        }
+        if let Some(tex_coord) = element.tex_coord {
+            self.tex_coord(tex_coord);
+        }
+        if let Some(color) = element.color {
+            self.color(color);
+        }
+        if let Some(normal) = element.normal {
+            self.normal(normal);
+        }
+        if let Some(position) = element.position {
+            self.vertex(position);
+        }
+        Ok(())
+    }
+
+    /// glDrawArrays / glDrawElements / glDrawRangeElements from the arrays' bytes: the
+    /// vertices of glBegin(mode), glArrayElement(i) for each index, glEnd. Each vertex is
+    /// lit exactly as the equivalent immediate-mode calls light it (same
+    /// `DerivedState::process`; with color material on, each vertex's color stands in for
+    /// the tracked material, as after a glColor). The current attributes are left as they
+    /// were (GL 1.5 §2.8 leaves them undefined after a draw).
+    ///
+    /// GL_INVALID_OPERATION when `sources` misses bytes of an enabled array;
+    /// GL_OUT_OF_MEMORY when the vertices do not fit in memory.
+    pub fn draw_arrays_from(
+        &mut self,
+        mode: GLenum,
+        sources: &ArraySources,
+        indices: &ElementIndices,
+    ) -> GlResult {
+        self.outside_begin_end()?;
+        check_mode(mode)?;
+        if let ElementIndices::Listed { index_type, .. } = *indices {
+            index_size(index_type).ok_or(GlError::InvalidEnum)?;
+        }
+        let Some((first, last)) = indices.range() else {
+            return Ok(());
+        };
+        let arrays = self.arrays;
+        if !arrays.get(ArrayKind::Vertex).enabled {
+            return Ok(());
+        }
+        let reader = ArrayReader::new(&arrays, sources, first, last)?;
+        let mut vertices = Vec::new();
+        vertices
+            .try_reserve_exact(indices.len())
+            .map_err(|_| GlError::OutOfMemory)?;
+        let current = self.current;
+        let derived = self.derived();
+        indices.for_each(|index| {
+            let element = reader.element(index);
+            let position = element.position.expect("the vertex array is enabled");
+            vertices.push(derived.process(position, &element.attribs(&current)));
+        });
+        self.draw_vertices(mode, &vertices);
+        Ok(())
+    }
+}

@@ -1,0 +1,461 @@
+//! Vertex array state (§2.8, table 6.8): each array's size, type, stride, enable and the
+//! application's pointer, kept as an address that only the C layer dereferences. Also the
+//! decoding of one array element from bytes, with the conversions of table 2.9.
+
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+use crate::state::convert::Component;
+
+/// The arrays fflight draws from, in the order `VertexArrays` stores them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ArrayKind {
+    Vertex,
+    Normal,
+    Color,
+    TexCoord,
+    EdgeFlag,
+}
+
+/// Every array, in storage order.
+const ALL_KINDS: [ArrayKind; 5] = [
+    ArrayKind::Vertex,
+    ArrayKind::Normal,
+    ArrayKind::Color,
+    ArrayKind::TexCoord,
+    ArrayKind::EdgeFlag,
+];
+
+impl ArrayKind {
+    /// The array glEnableClientState names; `None` for GL_INDEX_ARRAY and unknown names.
+    pub fn of_client_state(array: GLenum) -> Option<ArrayKind> {
+        Some(match array {
+            GL_VERTEX_ARRAY => ArrayKind::Vertex,
+            GL_NORMAL_ARRAY => ArrayKind::Normal,
+            GL_COLOR_ARRAY => ArrayKind::Color,
+            GL_TEXTURE_COORD_ARRAY => ArrayKind::TexCoord,
+            GL_EDGE_FLAG_ARRAY => ArrayKind::EdgeFlag,
+            _ => return None,
+        })
+    }
+
+    /// The array whose pointer glGetPointerv's `pname` asks for.
+    pub fn of_pointer_name(pname: GLenum) -> Option<ArrayKind> {
+        Some(match pname {
+            GL_VERTEX_ARRAY_POINTER => ArrayKind::Vertex,
+            GL_NORMAL_ARRAY_POINTER => ArrayKind::Normal,
+            GL_COLOR_ARRAY_POINTER => ArrayKind::Color,
+            GL_TEXTURE_COORD_ARRAY_POINTER => ArrayKind::TexCoord,
+            GL_EDGE_FLAG_ARRAY_POINTER => ArrayKind::EdgeFlag,
+            _ => return None,
+        })
+    }
+
+    /// The component types the array's pointer command accepts (§2.8, table 2.4).
+    fn accepts_type(self, component_type: GLenum) -> bool {
+        match self {
+            ArrayKind::Vertex | ArrayKind::TexCoord => {
+                matches!(component_type, GL_SHORT | GL_INT | GL_FLOAT | GL_DOUBLE)
+            }
+            ArrayKind::Normal => {
+                matches!(
+                    component_type,
+                    GL_BYTE | GL_SHORT | GL_INT | GL_FLOAT | GL_DOUBLE
+                )
+            }
+            ArrayKind::Color => component_size(component_type).is_some(),
+            ArrayKind::EdgeFlag => component_type == GL_UNSIGNED_BYTE,
+        }
+    }
+
+    /// The component counts the array's pointer command accepts (table 2.4).
+    fn accepts_size(self, size: i32) -> bool {
+        match self {
+            ArrayKind::Vertex => (2..=4).contains(&size),
+            ArrayKind::Normal => size == 3,
+            ArrayKind::Color => (3..=4).contains(&size),
+            ArrayKind::TexCoord => (1..=4).contains(&size),
+            ArrayKind::EdgeFlag => size == 1,
+        }
+    }
+
+    /// Integer colors and normals are normalized (table 2.9); coordinates convert directly.
+    fn normalized(self) -> bool {
+        matches!(self, ArrayKind::Normal | ArrayKind::Color)
+    }
+}
+
+/// The size in bytes of a GL component type; `None` for a type no array accepts.
+pub fn component_size(component_type: GLenum) -> Option<usize> {
+    Some(match component_type {
+        GL_BYTE | GL_UNSIGNED_BYTE => 1,
+        GL_SHORT | GL_UNSIGNED_SHORT => 2,
+        GL_INT | GL_UNSIGNED_INT | GL_FLOAT => 4,
+        GL_DOUBLE => 8,
+        _ => return None,
+    })
+}
+
+/// One vertex array's state (table 6.8).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ClientArray {
+    pub enabled: bool,
+    /// Components per element.
+    pub size: i32,
+    pub component_type: GLenum,
+    /// Bytes from one element to the next as specified: 0 means tightly packed.
+    pub stride: i32,
+    /// The application's pointer as an address (0 = NULL). Only src/capi/ dereferences it.
+    pub address: usize,
+}
+
+impl ClientArray {
+    fn initial(size: i32, component_type: GLenum) -> ClientArray {
+        ClientArray {
+            enabled: false,
+            size,
+            component_type,
+            stride: 0,
+            address: 0,
+        }
+    }
+
+    /// Bytes one element occupies.
+    pub fn element_size(&self) -> usize {
+        self.size as usize * component_size(self.component_type).unwrap_or(1)
+    }
+
+    /// Bytes from one element to the next: the stride, or the element size for 0.
+    pub fn effective_stride(&self) -> usize {
+        if self.stride == 0 {
+            self.element_size()
+        } else {
+            self.stride as usize
+        }
+    }
+
+    /// Bytes elements `first..=last` occupy, counted from the start of element `first`;
+    /// `None` if that does not fit the address space.
+    pub fn span_len(&self, first: usize, last: usize) -> Option<usize> {
+        (last - first)
+            .checked_mul(self.effective_stride())?
+            .checked_add(self.element_size())
+            .filter(|&len| len <= isize::MAX as usize)
+    }
+
+    /// Element `index` of the array whose bytes start with element `base`, as 4 components
+    /// padded with (0, 0, 0, 1) and converted as the array's commands convert them. `bytes`
+    /// must hold the element (see `span_len`).
+    pub fn read(&self, kind: ArrayKind, bytes: &[u8], base: usize, index: usize) -> [f32; 4] {
+        let offset = (index - base) * self.effective_stride();
+        let mut out = [0.0, 0.0, 0.0, 1.0];
+        read_components(
+            &bytes[offset..offset + self.element_size()],
+            self.component_type,
+            kind.normalized(),
+            &mut out[..self.size as usize],
+        );
+        out
+    }
+}
+
+/// Decodes `out.len()` components of `component_type` from the front of `bytes` (native byte
+/// order, any alignment): normalized per table 2.9, or converted directly.
+pub fn read_components(bytes: &[u8], component_type: GLenum, normalize: bool, out: &mut [f32]) {
+    fn each<T: Component, const N: usize>(
+        bytes: &[u8],
+        from_bytes: fn([u8; N]) -> T,
+        normalize: bool,
+        out: &mut [f32],
+    ) {
+        for (o, chunk) in out.iter_mut().zip(bytes.chunks_exact(N)) {
+            let value = from_bytes(chunk.try_into().expect("chunks of N bytes"));
+            *o = if normalize {
+                value.normalized()
+            } else {
+                value.direct()
+            };
+        }
+    }
+    match component_type {
+        GL_BYTE => each(bytes, i8::from_ne_bytes, normalize, out),
+        GL_UNSIGNED_BYTE => each(bytes, u8::from_ne_bytes, normalize, out),
+        GL_SHORT => each(bytes, i16::from_ne_bytes, normalize, out),
+        GL_UNSIGNED_SHORT => each(bytes, u16::from_ne_bytes, normalize, out),
+        GL_INT => each(bytes, i32::from_ne_bytes, normalize, out),
+        GL_UNSIGNED_INT => each(bytes, u32::from_ne_bytes, normalize, out),
+        GL_FLOAT => each(bytes, f32::from_ne_bytes, normalize, out),
+        GL_DOUBLE => each(bytes, f64::from_ne_bytes, normalize, out),
+        _ => {}
+    }
+}
+
+/// Where one enabled array's bytes for a draw are: `len` bytes at `address`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ByteSpan {
+    pub address: usize,
+    pub len: usize,
+}
+
+/// The vertex arrays of a context (table 6.8).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct VertexArrays {
+    arrays: [ClientArray; 5],
+    /// GL_INDEX_ARRAY's enable: fflight has no color index mode, so it is only stored for
+    /// glIsEnabled.
+    pub index_enabled: bool,
+}
+
+impl Default for VertexArrays {
+    fn default() -> VertexArrays {
+        VertexArrays {
+            arrays: [
+                ClientArray::initial(4, GL_FLOAT),
+                ClientArray::initial(3, GL_FLOAT),
+                ClientArray::initial(4, GL_FLOAT),
+                ClientArray::initial(4, GL_FLOAT),
+                ClientArray::initial(1, GL_UNSIGNED_BYTE),
+            ],
+            index_enabled: false,
+        }
+    }
+}
+
+impl VertexArrays {
+    pub fn get(&self, kind: ArrayKind) -> &ClientArray {
+        &self.arrays[kind as usize]
+    }
+
+    /// glVertexPointer, glNormalPointer ...: Mesa's order of checks (stride, type, size).
+    pub fn set_pointer(
+        &mut self,
+        kind: ArrayKind,
+        size: i32,
+        component_type: GLenum,
+        stride: i32,
+        address: usize,
+    ) -> GlResult {
+        if stride < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        if !kind.accepts_type(component_type) {
+            return Err(GlError::InvalidEnum);
+        }
+        if !kind.accepts_size(size) {
+            return Err(GlError::InvalidValue);
+        }
+        let array = &mut self.arrays[kind as usize];
+        array.size = size;
+        array.component_type = component_type;
+        array.stride = stride;
+        array.address = address;
+        Ok(())
+    }
+
+    /// glEnableClientState / glDisableClientState.
+    pub fn set_enabled(&mut self, array: GLenum, enabled: bool) -> GlResult {
+        match ArrayKind::of_client_state(array) {
+            Some(kind) => self.arrays[kind as usize].enabled = enabled,
+            None if array == GL_INDEX_ARRAY => self.index_enabled = enabled,
+            None => return Err(GlError::InvalidEnum),
+        }
+        Ok(())
+    }
+
+    /// Whether a client-state array is enabled; `None` if `array` names none.
+    pub fn is_enabled(&self, array: GLenum) -> Option<bool> {
+        match ArrayKind::of_client_state(array) {
+            Some(kind) => Some(self.get(kind).enabled),
+            None => (array == GL_INDEX_ARRAY).then_some(self.index_enabled),
+        }
+    }
+
+    /// The enabled arrays, with their kinds.
+    pub fn enabled(&self) -> impl Iterator<Item = (ArrayKind, &ClientArray)> {
+        ALL_KINDS
+            .into_iter()
+            .zip(&self.arrays)
+            .filter(|(_, array)| array.enabled)
+    }
+
+    /// Where the bytes of elements `first..=last` of every enabled array are: what the C
+    /// layer may read for a draw using those elements. A NULL pointer is GL's undefined
+    /// behavior; fflight's documented choice is GL_INVALID_OPERATION (nothing is drawn).
+    /// GL_INVALID_VALUE when the range does not fit the address space.
+    pub fn spans(&self, first: usize, last: usize) -> GlResult<[Option<ByteSpan>; 5]> {
+        let mut spans = [None; 5];
+        for (kind, array) in self.enabled() {
+            if array.address == 0 {
+                return Err(GlError::InvalidOperation);
+            }
+            let span = first
+                .checked_mul(array.effective_stride())
+                .and_then(|offset| array.address.checked_add(offset))
+                .zip(array.span_len(first, last))
+                .filter(|&(address, len)| address.checked_add(len).is_some())
+                .ok_or(GlError::InvalidValue)?;
+            spans[kind as usize] = Some(ByteSpan {
+                address: span.0,
+                len: span.1,
+            });
+        }
+        Ok(spans)
+    }
+
+    /// glInterleavedArrays (§2.8, table 2.5): sets and enables the arrays `format` packs,
+    /// disables the others. A NULL `address` leaves every pointer NULL (rather than small
+    /// offsets from NULL, which fflight, having no buffer objects, could only crash on).
+    pub fn set_interleaved(&mut self, format: GLenum, stride: i32, address: usize) -> GlResult {
+        if stride < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        let layout = InterleavedLayout::of(format)?;
+        let stride = if stride == 0 { layout.stride } else { stride };
+        let at = |offset: usize| {
+            if address == 0 {
+                0
+            } else {
+                address.wrapping_add(offset)
+            }
+        };
+        self.index_enabled = false;
+        self.arrays[ArrayKind::EdgeFlag as usize].enabled = false;
+        let parts = [
+            (ArrayKind::TexCoord, layout.tex_coord),
+            (ArrayKind::Color, layout.color),
+            (ArrayKind::Normal, layout.normal),
+            (ArrayKind::Vertex, Some(layout.vertex)),
+        ];
+        for (kind, part) in parts {
+            let array = &mut self.arrays[kind as usize];
+            array.enabled = part.is_some();
+            if let Some((size, component_type, offset)) = part {
+                array.size = size;
+                array.component_type = component_type;
+                array.stride = stride;
+                array.address = at(offset);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// One row of table 2.5: each packed array as (size, type, byte offset), and the stride of
+/// a tightly packed element.
+struct InterleavedLayout {
+    tex_coord: Option<(i32, GLenum, usize)>,
+    color: Option<(i32, GLenum, usize)>,
+    normal: Option<(i32, GLenum, usize)>,
+    vertex: (i32, GLenum, usize),
+    stride: i32,
+}
+
+impl InterleavedLayout {
+    fn of(format: GLenum) -> GlResult<InterleavedLayout> {
+        const F: usize = 4; // sizeof(GLfloat)
+        let t = |size: i32| Some((size, GL_FLOAT, 0));
+        let c4ub = |offset: usize| Some((4, GL_UNSIGNED_BYTE, offset));
+        let cf = |size: i32, offset: usize| Some((size, GL_FLOAT, offset));
+        let n = |offset: usize| Some((3, GL_FLOAT, offset));
+        let v = |size: i32, offset: usize| (size, GL_FLOAT, offset);
+        let (tex_coord, color, normal, vertex, stride) = match format {
+            GL_V2F => (None, None, None, v(2, 0), 2 * F),
+            GL_V3F => (None, None, None, v(3, 0), 3 * F),
+            GL_C4UB_V2F => (None, c4ub(0), None, v(2, 4), 4 + 2 * F),
+            GL_C4UB_V3F => (None, c4ub(0), None, v(3, 4), 4 + 3 * F),
+            GL_C3F_V3F => (None, cf(3, 0), None, v(3, 3 * F), 6 * F),
+            GL_N3F_V3F => (None, None, n(0), v(3, 3 * F), 6 * F),
+            GL_C4F_N3F_V3F => (None, cf(4, 0), n(4 * F), v(3, 7 * F), 10 * F),
+            GL_T2F_V3F => (t(2), None, None, v(3, 2 * F), 5 * F),
+            GL_T4F_V4F => (t(4), None, None, v(4, 4 * F), 8 * F),
+            GL_T2F_C4UB_V3F => (t(2), c4ub(2 * F), None, v(3, 4 + 2 * F), 4 + 5 * F),
+            GL_T2F_C3F_V3F => (t(2), cf(3, 2 * F), None, v(3, 5 * F), 8 * F),
+            GL_T2F_N3F_V3F => (t(2), None, n(2 * F), v(3, 5 * F), 8 * F),
+            GL_T2F_C4F_N3F_V3F => (t(2), cf(4, 2 * F), n(6 * F), v(3, 9 * F), 12 * F),
+            GL_T4F_C4F_N3F_V4F => (t(4), cf(4, 4 * F), n(8 * F), v(4, 11 * F), 15 * F),
+            _ => return Err(GlError::InvalidEnum),
+        };
+        Ok(InterleavedLayout {
+            tex_coord,
+            color,
+            normal,
+            vertex,
+            stride: stride as i32,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pointer_checks_follow_mesa_order() {
+        let mut arrays = VertexArrays::default();
+        assert_eq!(
+            arrays.set_pointer(ArrayKind::Vertex, 5, GL_BYTE, -1, 8),
+            Err(GlError::InvalidValue)
+        );
+        assert_eq!(
+            arrays.set_pointer(ArrayKind::Vertex, 5, GL_BYTE, 0, 8),
+            Err(GlError::InvalidEnum)
+        );
+        assert_eq!(
+            arrays.set_pointer(ArrayKind::Vertex, 1, GL_FLOAT, 0, 8),
+            Err(GlError::InvalidValue)
+        );
+        assert_eq!(arrays, VertexArrays::default());
+    }
+
+    #[test]
+    fn interleaved_strides_match_table_2_5() {
+        let expected = [
+            (GL_V2F, 8),
+            (GL_V3F, 12),
+            (GL_C4UB_V2F, 12),
+            (GL_C4UB_V3F, 16),
+            (GL_C3F_V3F, 24),
+            (GL_N3F_V3F, 24),
+            (GL_C4F_N3F_V3F, 40),
+            (GL_T2F_V3F, 20),
+            (GL_T4F_V4F, 32),
+            (GL_T2F_C4UB_V3F, 24),
+            (GL_T2F_C3F_V3F, 32),
+            (GL_T2F_N3F_V3F, 32),
+            (GL_T2F_C4F_N3F_V3F, 48),
+            (GL_T4F_C4F_N3F_V4F, 60),
+        ];
+        for (format, stride) in expected {
+            let layout = InterleavedLayout::of(format).unwrap();
+            assert_eq!(layout.stride, stride, "format {format:#x}");
+            // The vertex is last: the element ends where the stride does.
+            let (size, _, offset) = layout.vertex;
+            assert_eq!(offset + 4 * size as usize, stride as usize, "{format:#x}");
+        }
+    }
+
+    #[test]
+    fn spans_cover_exactly_the_elements_used() {
+        let mut arrays = VertexArrays::default();
+        arrays
+            .set_pointer(ArrayKind::Vertex, 3, GL_SHORT, 10, 1000)
+            .unwrap();
+        arrays.set_enabled(GL_VERTEX_ARRAY, true).unwrap();
+        let spans = arrays.spans(2, 4).unwrap();
+        assert_eq!(
+            spans[0],
+            Some(ByteSpan {
+                address: 1020,
+                len: 26
+            })
+        );
+        assert!(spans[1..].iter().all(Option::is_none));
+        arrays
+            .set_pointer(ArrayKind::Vertex, 3, GL_SHORT, 10, 0)
+            .unwrap();
+        assert_eq!(arrays.spans(0, 0), Err(GlError::InvalidOperation));
+        arrays
+            .set_pointer(ArrayKind::Vertex, 3, GL_SHORT, 10, usize::MAX - 100)
+            .unwrap();
+        assert_eq!(arrays.spans(0, 1000), Err(GlError::InvalidValue));
+    }
+}
