@@ -5,7 +5,12 @@ use crate::gl::*;
 
 #[unsafe(no_mangle)]
 pub extern "C" fn glGetError() -> GLenum {
-    with_context(|ctx| Ok(ctx.get_error()))
+    // §2.6.3: GetError is not allowed between Begin and End; there it is GL_INVALID_OPERATION
+    // and returns 0 (GL_NO_ERROR), leaving an earlier error in the flag, as in Mesa.
+    with_context(|ctx| {
+        ctx.outside_begin_end()?;
+        Ok(ctx.get_error())
+    })
 }
 
 /// # Safety
