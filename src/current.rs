@@ -49,20 +49,33 @@ impl Drop for Current {
 
 thread_local! {
     static CURRENT: RefCell<Option<Current>> = const { RefCell::new(None) };
+    /// The context a thread falls back to when none is current: made on its first GL call,
+    /// kept for the thread's life, so releasing another context returns to it intact.
+    static DEFAULT: RefCell<Option<Arc<FflContext>>> = const { RefCell::new(None) };
 }
 
-/// Runs `f` on this thread's current context, first creating a default one if there is none.
+fn default_handle() -> Option<Arc<FflContext>> {
+    DEFAULT
+        .try_with(|slot| {
+            slot.borrow_mut()
+                .get_or_insert_with(FflContext::new)
+                .clone()
+        })
+        .ok()
+}
+
+/// Runs `f` on this thread's current context; with none current, on the thread's default one.
 /// `None` when the thread is exiting or the call is re-entrant (a GL call from a callback).
 pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
     CURRENT
         .try_with(|slot| {
             let mut slot = slot.try_borrow_mut().ok()?;
-            let current = slot.get_or_insert_with(|| {
-                let handle = FflContext::new();
+            if slot.is_none() {
+                let handle = default_handle()?;
                 let context = handle.take();
-                Current { handle, context }
-            });
-            current.context.as_deref_mut().map(f)
+                *slot = Some(Current { handle, context });
+            }
+            slot.as_mut()?.context.as_deref_mut().map(f)
         })
         .ok()
         .flatten()
@@ -108,6 +121,17 @@ pub fn current_handle() -> Option<Arc<FflContext>> {
         .flatten()
 }
 
+/// Whether `handle` is this thread's default context (which only the thread's end destroys).
+pub fn is_thread_default(handle: &Arc<FflContext>) -> bool {
+    DEFAULT
+        .try_with(|slot| {
+            slot.borrow()
+                .as_ref()
+                .is_some_and(|d| Arc::ptr_eq(d, handle))
+        })
+        .unwrap_or(false)
+}
+
 /// Whether the context behind `handle` is current on some thread other than this one.
 pub fn current_elsewhere(handle: &Arc<FflContext>) -> bool {
     let here = current_handle().is_some_and(|current| Arc::ptr_eq(&current, handle));
@@ -138,6 +162,16 @@ mod tests {
             .join()
             .unwrap();
         assert_eq!(result, Ok(()));
+    }
+
+    #[test]
+    fn releasing_a_context_returns_to_the_thread_default_intact() {
+        with_current(|ctx| ctx.normal(glam::Vec3::Y)).unwrap();
+        let other = FflContext::new();
+        make_current(Some(other.clone())).unwrap();
+        assert_eq!(with_current(|ctx| ctx.current.normal), Some(glam::Vec3::Z));
+        make_current(None).unwrap();
+        assert_eq!(with_current(|ctx| ctx.current.normal), Some(glam::Vec3::Y));
     }
 
     #[test]

@@ -47,7 +47,8 @@ pub extern "C" fn fflGetCurrentContext() -> *mut FflContext {
 }
 
 /// Destroys `context`. A context current on the calling thread is released first; one current
-/// on another thread is not destroyed (GL_FALSE, GL_INVALID_OPERATION).
+/// on another thread, or the thread's default context, is not destroyed (GL_FALSE,
+/// GL_INVALID_OPERATION).
 ///
 /// # Safety
 /// `context` is NULL or a live pointer from `fflCreateContext`; it must not be used after.
@@ -61,7 +62,7 @@ pub unsafe extern "C" fn fflDestroyContext(context: *mut FflContext) -> GLboolea
         Arc::increment_strong_count(context);
         Arc::from_raw(context.cast_const())
     };
-    if current::current_elsewhere(&handle) {
+    if current::current_elsewhere(&handle) || current::is_thread_default(&handle) {
         with_context::<()>(|_| Err(GlError::InvalidOperation));
         return GL_FALSE;
     }
