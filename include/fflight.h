@@ -34,6 +34,53 @@ typedef double GLclampd;
  */
 typedef struct FflContext FflContext;
 
+/*
+ One captured vertex: positions in eye and clip coordinates, the lit colors of both faces
+ (without two-sided lighting the back colors equal the front ones), the texture
+ coordinate after the texture matrix, and the edge flag it was given.
+ */
+typedef struct FflCapturedVertex {
+  GLfloat eye[4];
+  GLfloat clip[4];
+  GLfloat front_primary[4];
+  GLfloat front_secondary[4];
+  GLfloat back_primary[4];
+  GLfloat back_secondary[4];
+  GLfloat tex_coord[4];
+  GLboolean edge_flag;
+} FflCapturedVertex;
+
+/*
+ One captured point, segment or triangle.
+ */
+typedef struct FflCapturedPrimitive {
+  /*
+   GL_POINTS, GL_LINES or GL_TRIANGLES.
+   */
+  GLenum kind;
+  /*
+   The mode of the draw it came from.
+   */
+  GLenum mode;
+  /*
+   Which draw it came from, counted from 0 since fflCaptureBegin.
+   */
+  GLuint draw;
+  /*
+   1, 2 or 3: how many of `vertices` are used.
+   */
+  GLuint vertex_count;
+  /*
+   Indices of its vertices for fflCaptureReadVertices; the last used is the provoking
+   vertex (the one whose colors flat shading uses).
+   */
+  GLuint vertices[3];
+  /*
+   Triangles: whether edge k (vertices[k] to the next) is drawn in polygon mode GL_LINE.
+   */
+  GLboolean edges[3];
+} FflCapturedPrimitive;
+
 #ifndef GL_FALSE
 #define GL_FALSE 0
 #endif
@@ -1281,6 +1328,87 @@ void glEdgeFlag(GLboolean flag);
  `flag` is NULL or points to one GLboolean.
  */
 void glEdgeFlagv(const GLboolean *flag);
+
+/*
+ Starts capturing the vertices and primitives of every draw (glBegin/glEnd and vertex
+ array draws), dropping what an earlier capture collected. Primitives are captured after
+ assembly, before clipping; capture does not stop feedback. GL_INVALID_OPERATION between
+ glBegin and glEnd.
+ */
+void fflCaptureBegin(void);
+
+/*
+ Stops capturing; what was collected stays readable until the next fflCaptureBegin.
+ GL_INVALID_OPERATION between glBegin and glEnd.
+ */
+void fflCaptureEnd(void);
+
+/*
+ How many vertices capture collected (every vertex given to a captured draw).
+ */
+GLuint fflCaptureVertexCount(void);
+
+/*
+ How many primitives capture collected.
+ */
+GLuint fflCapturePrimitiveCount(void);
+
+/*
+ Copies captured vertices `first..first + count` (fewer at the end) to `vertices` and
+ returns how many were copied.
+
+ # Safety
+ `vertices` is NULL or has room for `count` values.
+ */
+GLuint fflCaptureReadVertices(GLuint first, GLuint count, struct FflCapturedVertex *vertices);
+
+/*
+ Copies captured primitives `first..first + count` (fewer at the end) to `primitives` and
+ returns how many were copied.
+
+ # Safety
+ `primitives` is NULL or has room for `count` values.
+ */
+GLuint fflCaptureReadPrimitives(GLuint first,
+                                GLuint count,
+                                struct FflCapturedPrimitive *primitives);
+
+/*
+ Lights `count` vertices with the current state, exactly as glColor4fv, glNormal3fv and
+ glVertex{2,3,4}fv would in immediate mode, without drawing them: the current attributes
+ stay unchanged, nothing is captured or fed back.
+
+ Inputs: `positions` has `position_size` (2, 3 or 4) floats per vertex; `normals` 3 and
+ `colors` 4 (RGBA), or NULL for the current normal or color. Outputs (4 floats per vertex,
+ any of them NULL to skip): eye and clip coordinates, primary and secondary colors of the
+ front and back faces. Strides are in bytes, 0 meaning tightly packed, so outputs can be
+ interleaved in one array of structs. GL_INVALID_VALUE for a negative count or stride, a
+ bad position size or NULL positions; GL_INVALID_OPERATION between glBegin and glEnd.
+
+ # Safety
+ Every non-NULL array must hold `count` elements at its stride; outputs must not overlap
+ inputs.
+ */
+void fflLightVertices(GLsizei count,
+                      GLint position_size,
+                      const GLfloat *positions,
+                      GLsizei position_stride,
+                      const GLfloat *normals,
+                      GLsizei normal_stride,
+                      const GLfloat *colors,
+                      GLsizei color_stride,
+                      GLfloat *eye_positions,
+                      GLsizei eye_stride,
+                      GLfloat *clip_positions,
+                      GLsizei clip_stride,
+                      GLfloat *front_primary,
+                      GLsizei front_primary_stride,
+                      GLfloat *front_secondary,
+                      GLsizei front_secondary_stride,
+                      GLfloat *back_primary,
+                      GLsizei back_primary_stride,
+                      GLfloat *back_secondary,
+                      GLsizei back_secondary_stride);
 
 /*
  Creates a context with GL's initial state. It is not made current.

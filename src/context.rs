@@ -47,6 +47,7 @@ pub struct Context {
     pub(crate) feedback_address: usize,
     pub(crate) primitive: Option<PrimitiveInProgress>,
     pub(crate) arrays: crate::state::arrays::VertexArrays,
+    pub(crate) capture: crate::pipeline::capture::Capture,
     derived: Option<DerivedState>,
 }
 
@@ -74,6 +75,7 @@ impl Context {
             feedback_address: 0,
             primitive: None,
             arrays: Default::default(),
+            capture: Default::default(),
             derived: None,
         }
     }

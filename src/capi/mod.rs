@@ -7,6 +7,7 @@
 
 mod arrays;
 mod attribs;
+mod capture;
 mod context;
 mod feedback;
 mod lighting;

@@ -344,12 +344,13 @@ impl Context {
         &self,
         indices: &ElementIndices,
     ) -> GlResult<Option<(usize, [Option<ByteSpan>; 5])>> {
-        let Some((first, last)) = indices.range() else {
-            return Ok(None);
-        };
+        // Without the vertex array not even the indices are read.
         if !self.arrays.get(ArrayKind::Vertex).enabled {
             return Ok(None);
         }
+        let Some((first, last)) = indices.range() else {
+            return Ok(None);
+        };
         Ok(Some((first, self.arrays.spans(first, last)?)))
     }
 
@@ -398,13 +399,13 @@ impl Context {
         if let ElementIndices::Listed { index_type, .. } = *indices {
             index_size(index_type).ok_or(GlError::InvalidEnum)?;
         }
-        let Some((first, last)) = indices.range() else {
-            return Ok(());
-        };
         let arrays = self.arrays;
         if !arrays.get(ArrayKind::Vertex).enabled {
             return Ok(());
         }
+        let Some((first, last)) = indices.range() else {
+            return Ok(());
+        };
         let reader = ArrayReader::new(&arrays, sources, first, last)?;
         let mut vertices = Vec::new();
         vertices

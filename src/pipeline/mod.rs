@@ -2,6 +2,7 @@
 //! polygon mode and feedback (§2.6, §2.12, §2.14.1, §2.14.7, §3.5, §5.3).
 
 pub mod assembly;
+pub mod capture;
 pub mod clip;
 pub mod feedback;
 pub mod vertex;
@@ -45,6 +46,7 @@ impl Context {
 
     /// Assembles the primitives of `mode` from processed vertices and sends them on (§2.6.1).
     pub(crate) fn draw_vertices(&mut self, mode: GLenum, vertices: &[ProcessedVertex]) {
+        self.capture.record(mode, vertices);
         if self.render_mode != RenderMode::Feedback {
             return;
         }

@@ -1,0 +1,279 @@
+//! fflight's capture API: fflCaptureBegin, fflCaptureEnd, fflCaptureVertexCount,
+//! fflCapturePrimitiveCount, fflCaptureReadVertices, fflCaptureReadPrimitives and the bulk
+//! lighting call fflLightVertices (see `commands::capture` and `pipeline::capture`).
+
+use glam::{Vec3, Vec4};
+
+use super::with_context;
+use crate::commands::capture::BulkLayout;
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+use crate::pipeline::capture::CapturedPrimitive;
+use crate::pipeline::vertex::ProcessedVertex;
+
+/// One captured vertex: positions in eye and clip coordinates, the lit colors of both faces
+/// (without two-sided lighting the back colors equal the front ones), the texture
+/// coordinate after the texture matrix, and the edge flag it was given.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct FflCapturedVertex {
+    pub eye: [GLfloat; 4],
+    pub clip: [GLfloat; 4],
+    pub front_primary: [GLfloat; 4],
+    pub front_secondary: [GLfloat; 4],
+    pub back_primary: [GLfloat; 4],
+    pub back_secondary: [GLfloat; 4],
+    pub tex_coord: [GLfloat; 4],
+    pub edge_flag: GLboolean,
+}
+
+impl From<&ProcessedVertex> for FflCapturedVertex {
+    fn from(v: &ProcessedVertex) -> FflCapturedVertex {
+        FflCapturedVertex {
+            eye: v.eye.to_array(),
+            clip: v.clip.to_array(),
+            front_primary: v.colors.front.primary.to_array(),
+            front_secondary: v.colors.front.secondary.to_array(),
+            back_primary: v.colors.back.primary.to_array(),
+            back_secondary: v.colors.back.secondary.to_array(),
+            tex_coord: v.tex_coord.to_array(),
+            edge_flag: v.edge_flag.into(),
+        }
+    }
+}
+
+/// One captured point, segment or triangle.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FflCapturedPrimitive {
+    /// GL_POINTS, GL_LINES or GL_TRIANGLES.
+    pub kind: GLenum,
+    /// The mode of the draw it came from.
+    pub mode: GLenum,
+    /// Which draw it came from, counted from 0 since fflCaptureBegin.
+    pub draw: GLuint,
+    /// 1, 2 or 3: how many of `vertices` are used.
+    pub vertex_count: GLuint,
+    /// Indices of its vertices for fflCaptureReadVertices; the last used is the provoking
+    /// vertex (the one whose colors flat shading uses).
+    pub vertices: [GLuint; 3],
+    /// Triangles: whether edge k (vertices[k] to the next) is drawn in polygon mode GL_LINE.
+    pub edges: [GLboolean; 3],
+}
+
+/// A count or index as a GLuint, saturated.
+fn gl_uint(n: usize) -> GLuint {
+    GLuint::try_from(n).unwrap_or(GLuint::MAX)
+}
+
+impl From<&CapturedPrimitive> for FflCapturedPrimitive {
+    fn from(p: &CapturedPrimitive) -> FflCapturedPrimitive {
+        FflCapturedPrimitive {
+            kind: p.kind,
+            mode: p.mode,
+            draw: gl_uint(p.draw),
+            vertex_count: gl_uint(p.vertex_count()),
+            vertices: p.vertices.map(gl_uint),
+            edges: p.edges.map(GLboolean::from),
+        }
+    }
+}
+
+/// Starts capturing the vertices and primitives of every draw (glBegin/glEnd and vertex
+/// array draws), dropping what an earlier capture collected. Primitives are captured after
+/// assembly, before clipping; capture does not stop feedback. GL_INVALID_OPERATION between
+/// glBegin and glEnd.
+#[unsafe(no_mangle)]
+pub extern "C" fn fflCaptureBegin() {
+    with_context(|ctx| ctx.capture_begin())
+}
+
+/// Stops capturing; what was collected stays readable until the next fflCaptureBegin.
+/// GL_INVALID_OPERATION between glBegin and glEnd.
+#[unsafe(no_mangle)]
+pub extern "C" fn fflCaptureEnd() {
+    with_context(|ctx| ctx.capture_end())
+}
+
+/// How many vertices capture collected (every vertex given to a captured draw).
+#[unsafe(no_mangle)]
+pub extern "C" fn fflCaptureVertexCount() -> GLuint {
+    with_context(|ctx| Ok(gl_uint(ctx.captured().vertices().len())))
+}
+
+/// How many primitives capture collected.
+#[unsafe(no_mangle)]
+pub extern "C" fn fflCapturePrimitiveCount() -> GLuint {
+    with_context(|ctx| Ok(gl_uint(ctx.captured().primitives().len())))
+}
+
+/// Copies `items[first..first + count]` (fewer at the end) to `out`, converted; returns how
+/// many were copied. NULL `out` with a positive count is GL_INVALID_VALUE.
+///
+/// # Safety
+/// A non-NULL `out` must have room for `count` values.
+unsafe fn copy_out<T, C: for<'a> From<&'a T>>(
+    items: &[T],
+    first: GLuint,
+    count: GLuint,
+    out: *mut C,
+) -> GlResult<GLuint> {
+    let items = items.get(first as usize..).unwrap_or(&[]);
+    let items = &items[..items.len().min(count as usize)];
+    if items.is_empty() {
+        return Ok(0);
+    }
+    if out.is_null() {
+        return Err(GlError::InvalidValue);
+    }
+    for (k, item) in items.iter().enumerate() {
+        // SAFETY: the caller guarantees room for `count` values; k < count.
+        unsafe { out.add(k).write(C::from(item)) };
+    }
+    Ok(gl_uint(items.len()))
+}
+
+/// Copies captured vertices `first..first + count` (fewer at the end) to `vertices` and
+/// returns how many were copied.
+///
+/// # Safety
+/// `vertices` is NULL or has room for `count` values.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fflCaptureReadVertices(
+    first: GLuint,
+    count: GLuint,
+    vertices: *mut FflCapturedVertex,
+) -> GLuint {
+    // SAFETY: forwarded from the caller.
+    with_context(|ctx| unsafe { copy_out(ctx.captured().vertices(), first, count, vertices) })
+}
+
+/// Copies captured primitives `first..first + count` (fewer at the end) to `primitives` and
+/// returns how many were copied.
+///
+/// # Safety
+/// `primitives` is NULL or has room for `count` values.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fflCaptureReadPrimitives(
+    first: GLuint,
+    count: GLuint,
+    primitives: *mut FflCapturedPrimitive,
+) -> GLuint {
+    // SAFETY: forwarded from the caller.
+    with_context(|ctx| unsafe { copy_out(ctx.captured().primitives(), first, count, primitives) })
+}
+
+/// `len` bytes at `ptr`, or `None` for NULL.
+///
+/// # Safety
+/// A non-NULL `ptr` must point to `len` readable bytes.
+unsafe fn bytes<'a>(ptr: *const GLfloat, len: usize) -> Option<&'a [u8]> {
+    // SAFETY: forwarded from the caller.
+    (!ptr.is_null()).then(|| unsafe { std::slice::from_raw_parts(ptr.cast::<u8>(), len) })
+}
+
+/// Lights `count` vertices with the current state, exactly as glColor4fv, glNormal3fv and
+/// glVertex{2,3,4}fv would in immediate mode, without drawing them: the current attributes
+/// stay unchanged, nothing is captured or fed back.
+///
+/// Inputs: `positions` has `position_size` (2, 3 or 4) floats per vertex; `normals` 3 and
+/// `colors` 4 (RGBA), or NULL for the current normal or color. Outputs (4 floats per vertex,
+/// any of them NULL to skip): eye and clip coordinates, primary and secondary colors of the
+/// front and back faces. Strides are in bytes, 0 meaning tightly packed, so outputs can be
+/// interleaved in one array of structs. GL_INVALID_VALUE for a negative count or stride, a
+/// bad position size or NULL positions; GL_INVALID_OPERATION between glBegin and glEnd.
+///
+/// # Safety
+/// Every non-NULL array must hold `count` elements at its stride; outputs must not overlap
+/// inputs.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn fflLightVertices(
+    count: GLsizei,
+    position_size: GLint,
+    positions: *const GLfloat,
+    position_stride: GLsizei,
+    normals: *const GLfloat,
+    normal_stride: GLsizei,
+    colors: *const GLfloat,
+    color_stride: GLsizei,
+    eye_positions: *mut GLfloat,
+    eye_stride: GLsizei,
+    clip_positions: *mut GLfloat,
+    clip_stride: GLsizei,
+    front_primary: *mut GLfloat,
+    front_primary_stride: GLsizei,
+    front_secondary: *mut GLfloat,
+    front_secondary_stride: GLsizei,
+    back_primary: *mut GLfloat,
+    back_primary_stride: GLsizei,
+    back_secondary: *mut GLfloat,
+    back_secondary_stride: GLsizei,
+) {
+    with_context(|ctx| {
+        ctx.outside_begin_end()?;
+        let layout = BulkLayout::new(
+            count,
+            position_size,
+            [position_stride, normal_stride, color_stride],
+            [
+                eye_stride,
+                clip_stride,
+                front_primary_stride,
+                front_secondary_stride,
+                back_primary_stride,
+                back_secondary_stride,
+            ],
+        )?;
+        let count = layout.count;
+        let len = |l: crate::commands::capture::FloatLayout| l.len(count).unwrap_or(0);
+        // SAFETY (all three): the caller guarantees `count` elements at the stride.
+        let positions = match unsafe { bytes(positions, len(layout.positions)) } {
+            Some(positions) => positions,
+            None if count == 0 => &[],
+            None => return Err(GlError::InvalidValue),
+        };
+        let normals = unsafe { bytes(normals, len(layout.normals)) };
+        let colors = unsafe { bytes(colors, len(layout.colors)) };
+        let outputs = [
+            eye_positions,
+            clip_positions,
+            front_primary,
+            front_secondary,
+            back_primary,
+            back_secondary,
+        ];
+        ctx.light_vertices_with(
+            count,
+            |i| {
+                let normal = normals.map(|n| layout.normals.read(n, i));
+                (
+                    Vec4::from_array(layout.positions.read(positions, i)),
+                    normal.map(|n| Vec3::new(n[0], n[1], n[2])),
+                    colors.map(|c| Vec4::from_array(layout.colors.read(c, i))),
+                )
+            },
+            |i, v| {
+                let values = [
+                    v.eye,
+                    v.clip,
+                    v.colors.front.primary,
+                    v.colors.front.secondary,
+                    v.colors.back.primary,
+                    v.colors.back.secondary,
+                ];
+                for ((&out, out_layout), value) in outputs.iter().zip(&layout.outputs).zip(values) {
+                    if !out.is_null() {
+                        // SAFETY: the caller guarantees `count` elements at the stride, not
+                        // overlapping the inputs; i < count.
+                        unsafe {
+                            out.byte_add(out_layout.offset(i))
+                                .cast::<[GLfloat; 4]>()
+                                .write_unaligned(value.to_array())
+                        };
+                    }
+                }
+            },
+        )
+    })
+}
