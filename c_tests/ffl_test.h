@@ -15,8 +15,11 @@
  *     program's own double-precision evaluation of the spec, and each is
  *     checked against the group with the same label before `ref`.
  *     A `tol` value after `ref` sets that line's color tolerance (never
- *     below the harness's own): the reference knows when the color raises
- *     float rounding to a high power (shininess, spot exponent).
+ *     below the harness's own) for comparisons involving OSMesa, which
+ *     evaluates in float32: the reference knows when the color raises
+ *     float rounding to a high power (shininess, spot exponent). fflight
+ *     evaluates in double from its stored state and is always held to the
+ *     harness's own tolerance against the reference.
  *   - A token `osmesa-exempt=<reason>` on such a line says OSMesa is known to
  *     differ from the spec there: the groups covered by `ref` are compared
  *     with the reference only, never across builds.

@@ -41,6 +41,9 @@ int main(void)
     mirror_light_modeli(&ref, GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
     mirror_enable(&ref, GL_LIGHT0, 1);
     mirror_enable(&ref, GL_LIGHTING, 1);
+    printf("stored_state");
+    mirror_print_deviation(mirror_read_stored_state(&ref));
+    printf("\n");
 
     glFeedbackBuffer(64, GL_3D_COLOR, buf);
     glRenderMode(GL_FEEDBACK);

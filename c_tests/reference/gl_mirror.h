@@ -3,8 +3,10 @@
  *
  * Each mirror_* function makes one GL call and the matching ref_* call with
  * the same arguments, so the reference keeps the state the program set.
- * mirror_draw_points draws vertices as GL_POINTS in feedback mode and prints
- * each fed-back vertex with its reference color.
+ * mirror_read_stored_state makes the reference take the state GL stored (in
+ * single precision) before it evaluates. mirror_draw_points draws vertices
+ * as GL_POINTS in feedback mode and prints each fed-back vertex with its
+ * reference color.
  * Include after ffl_test.h.
  */
 #ifndef FFL_GL_MIRROR_H
@@ -146,11 +148,180 @@ static inline void mirror_standard_view(ref_state *ref)
     mirror_load_identity(ref);
 }
 
+/* ---- the stored state --------------------------------------------------- */
+
+/* How far a stored value is from the reference's own double-precision copy,
+ * relative to the vector's size (at least 1). */
+static inline double mirror_deviation(const double *stored, const double *exact, int n)
+{
+    double scale = 1.0, worst = 0.0;
+    int k;
+    for (k = 0; k < n; k++)
+        if (fabs(exact[k]) > scale)
+            scale = fabs(exact[k]);
+    for (k = 0; k < n; k++)
+        if (fabs(stored[k] - exact[k]) > worst)
+            worst = fabs(stored[k] - exact[k]);
+    return worst / scale;
+}
+
+/* Reads n floats of state into d, returns its deviation from d's old value. */
+static inline double mirror_take(double *d, const GLfloat *stored, int n)
+{
+    double s[16], dev;
+    int k;
+    for (k = 0; k < n; k++)
+        s[k] = stored[k];
+    dev = mirror_deviation(s, d, n);
+    for (k = 0; k < n; k++)
+        d[k] = s[k];
+    return dev;
+}
+
+/* Whether the current color replaces material property `prop` of face 0
+ * (front) or 1 (back) while GL_COLOR_MATERIAL is enabled (§2.14.3). */
+static inline int mirror_tracked(const ref_state *ref, int face, GLenum prop)
+{
+    GLenum f = ref->color_material_face, m = ref->color_material_mode;
+    if (!ref->color_material)
+        return 0;
+    if (f != GL_FRONT_AND_BACK && f != (face == 0 ? GL_FRONT : GL_BACK))
+        return 0;
+    return m == prop || (m == GL_AMBIENT_AND_DIFFUSE && (prop == GL_AMBIENT || prop == GL_DIFFUSE));
+}
+
+/*
+ * Makes the reference evaluate the equation on the state as GL stores it.
+ *
+ * GL keeps its state in single precision: the eye-space light positions and
+ * spot directions and the modelview matrix are float results of float
+ * arithmetic, while the reference's mirror computed them in double. A high
+ * spot exponent or shininess amplifies that difference (up to 1.8e-5 in
+ * random_lighting), so before evaluating, the reference reads every piece of
+ * lighting state back through GL queries (glGetFloatv, glGetLightfv,
+ * glGetMaterialfv, glGetIntegerv, glIsEnabled) and takes those values. It
+ * still computes everything else itself, in double, from the specification;
+ * it sees the implementation only through GL queries, in each build alike.
+ *
+ * Returns the largest deviation of a stored value from the mirror's own
+ * double-precision state, relative to the size of the vector or matrix it
+ * belongs to, over the state that enters the equation (enabled lights, spot
+ * parameters of spot lights, material properties not replaced by the current
+ * color; not the current color and normal, which programs set per vertex): a
+ * program prints it (label `dev`, reference 0) so that a value
+ * stored wrongly still fails instead of silently becoming the reference.
+ * Call it outside glBegin/glEnd, after the state is set and before drawing;
+ * colors given later (glColor with color material) are mirrored as usual.
+ */
+static inline double mirror_read_stored_state(ref_state *ref)
+{
+    static const GLenum props[5] = { GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION,
+                                     GL_SHININESS };
+    GLfloat f[16];
+    GLint iv[2];
+    double dev = 0.0, d;
+    int i, face, k;
+
+    /* MIRROR_TAKE(dst, n, counted): dst takes the n stored values in f; their
+     * deviation counts if `counted`. */
+#define MIRROR_TAKE(dst, n, counted)                                              \
+    do {                                                                          \
+        d = mirror_take((dst), f, (n));                                           \
+        if ((counted) && d > dev)                                                 \
+            dev = d;                                                              \
+        if ((counted) && d > 1e-6 && getenv("MIRROR_DEBUG") != NULL)              \
+            fprintf(stderr, "stored %s (light/face %d) deviates by %g\n", #dst, i, d); \
+    } while (0)
+
+    i = -1;
+    glGetFloatv(GL_MODELVIEW_MATRIX, f);
+    MIRROR_TAKE(ref->modelview.m, 16, 1);
+
+    for (i = 0; i < REF_MAX_LIGHTS; i++) {
+        ref_light *l = &ref->light[i];
+        GLenum light = GL_LIGHT0 + i;
+        int on = glIsEnabled(light) == GL_TRUE, spot;
+        l->enabled = on;
+        glGetLightfv(light, GL_AMBIENT, f);
+        MIRROR_TAKE(l->ambient, 4, on);
+        glGetLightfv(light, GL_DIFFUSE, f);
+        MIRROR_TAKE(l->diffuse, 4, on);
+        glGetLightfv(light, GL_SPECULAR, f);
+        MIRROR_TAKE(l->specular, 4, on);
+        glGetLightfv(light, GL_POSITION, f);
+        MIRROR_TAKE(l->position, 4, on);
+        glGetLightfv(light, GL_SPOT_CUTOFF, f);
+        spot = f[0] != 180.0f || l->spot_cutoff != 180.0;
+        MIRROR_TAKE(&l->spot_cutoff, 1, on);
+        glGetLightfv(light, GL_SPOT_DIRECTION, f);
+        MIRROR_TAKE(l->spot_direction, 3, on && spot);
+        glGetLightfv(light, GL_SPOT_EXPONENT, f);
+        MIRROR_TAKE(&l->spot_exponent, 1, on && spot);
+        glGetLightfv(light, GL_CONSTANT_ATTENUATION, f);
+        MIRROR_TAKE(&l->constant_attenuation, 1, on);
+        glGetLightfv(light, GL_LINEAR_ATTENUATION, f);
+        MIRROR_TAKE(&l->linear_attenuation, 1, on);
+        glGetLightfv(light, GL_QUADRATIC_ATTENUATION, f);
+        MIRROR_TAKE(&l->quadratic_attenuation, 1, on);
+    }
+
+    i = -1;
+    glGetFloatv(GL_LIGHT_MODEL_AMBIENT, f);
+    MIRROR_TAKE(ref->model_ambient, 4, 1);
+    glGetIntegerv(GL_LIGHT_MODEL_LOCAL_VIEWER, iv);
+    ref->local_viewer = iv[0] != 0;
+    glGetIntegerv(GL_LIGHT_MODEL_TWO_SIDE, iv);
+    ref->two_side = iv[0] != 0;
+    glGetIntegerv(GL_LIGHT_MODEL_COLOR_CONTROL, iv);
+    ref->separate_specular = iv[0] == GL_SEPARATE_SPECULAR_COLOR;
+    glGetIntegerv(GL_COLOR_MATERIAL_FACE, iv);
+    ref->color_material_face = (GLenum)iv[0];
+    glGetIntegerv(GL_COLOR_MATERIAL_PARAMETER, iv);
+    ref->color_material_mode = (GLenum)iv[0];
+    ref->color_material = glIsEnabled(GL_COLOR_MATERIAL) == GL_TRUE;
+    ref->lighting = glIsEnabled(GL_LIGHTING) == GL_TRUE;
+    ref->normalize = glIsEnabled(GL_NORMALIZE) == GL_TRUE;
+    ref->rescale_normal = glIsEnabled(GL_RESCALE_NORMAL) == GL_TRUE;
+    /* programs set the current color and normal before each vertex that
+     * needs them, and may start a mirror over without resetting GL's */
+    glGetFloatv(GL_CURRENT_COLOR, f);
+    MIRROR_TAKE(ref->color, 4, 0);
+    glGetFloatv(GL_CURRENT_NORMAL, f);
+    MIRROR_TAKE(ref->normal, 3, 0);
+
+    for (face = 0; face < 2; face++) {
+        ref_material *m = &ref->material[face];
+        double *dst[5];
+        i = face;
+        dst[0] = m->ambient; dst[1] = m->diffuse; dst[2] = m->specular;
+        dst[3] = m->emission; dst[4] = &m->shininess;
+        for (k = 0; k < 5; k++) {
+            glGetMaterialfv(face == 0 ? GL_FRONT : GL_BACK, props[k], f);
+            MIRROR_TAKE(dst[k], k == 4 ? 1 : 4, !mirror_tracked(ref, face, props[k]));
+        }
+    }
+#undef MIRROR_TAKE
+
+    /* the tracked material properties take the current color (§2.14.3) */
+    ref_apply_color_material(ref);
+    return dev;
+}
+
+/* Prints " dev <d> ref dev 0": the stored state's deviation, checked by the
+ * harness against 0 with the color tolerance. */
+static inline void mirror_print_deviation(double dev)
+{
+    printf(" dev");
+    ffl_pf(dev);
+    printf(" ref dev 0");
+}
+
 #define MIRROR_MAX_POINTS 64
 
-/* Draws n points in feedback mode (GL_3D_COLOR). Before vertex k it sets the
- * normal normals[k] and the color colors[k] when those arrays are given.
- * Prints "<tag> <k> xyz x y z rgba r g b a ref rgba r g b a" per vertex,
+/* Draws n points in feedback mode (GL_3D_COLOR). First the reference takes
+ * the stored state (printed as "<tag> stored_state dev d ref dev 0"). Before
+ * vertex k it sets the normal normals[k] and the color colors[k] when those
+ * arrays are given. Prints "<tag> <k> xyz x y z rgba r g b a ref rgba r g b a" per vertex,
  * or a line saying what went wrong. Returns 0 on success. */
 static inline int mirror_draw_points(ref_state *ref, const char *tag, int n,
                                      const float (*vertices)[3], const float (*normals)[3],
@@ -162,6 +333,9 @@ static inline int mirror_draw_points(ref_state *ref, const char *tag, int n,
     int k;
     if (n > MIRROR_MAX_POINTS)
         n = MIRROR_MAX_POINTS;
+    printf("%s stored_state", tag);
+    mirror_print_deviation(mirror_read_stored_state(ref));
+    printf("\n");
     glFeedbackBuffer(MIRROR_MAX_POINTS * 8, GL_3D_COLOR, buf);
     glRenderMode(GL_FEEDBACK);
     glBegin(GL_POINTS);
