@@ -36,6 +36,7 @@ fn defaults() {
     assert_eq!(current_tex_coord(), [0.0, 0.0, 0.0, 1.0]);
     assert_eq!(get_doubles(GL_CURRENT_NORMAL, 3), [0.0, 0.0, 1.0]);
     assert_eq!(get_ints(GL_CURRENT_COLOR, 4), [i32::MAX; 4]);
+    assert_eq!(get_ints(GL_CURRENT_NORMAL, 3), [0, 0, i32::MAX]);
     assert_eq!(get_ints(GL_CURRENT_TEXTURE_COORDS, 4), [0, 0, 0, 1]);
     expect_no_error("defaults");
 }

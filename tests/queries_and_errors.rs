@@ -264,6 +264,7 @@ fn viewport_round_trips_clamps_and_rejects_negative_sizes() {
 fn depth_range_round_trips_clamped_to_0_1() {
     let _ctx = fresh();
     assert_eq!(get_doubles(GL_DEPTH_RANGE, 2), [0.0, 1.0]);
+    assert_eq!(get_ints(GL_DEPTH_RANGE, 2), [0, i32::MAX]);
     glDepthRange(0.25, 0.75);
     assert_eq!(get_doubles(GL_DEPTH_RANGE, 2), [0.25, 0.75]);
     assert_eq!(get_floats(GL_DEPTH_RANGE, 2), [0.25, 0.75]);
