@@ -63,6 +63,19 @@ fn feedback_mode_needs_a_feedback_buffer_first() {
 }
 
 #[test]
+#[ignore = "src/commands/feedback.rs answers GL_INVALID_ENUM: GL_SELECT is a valid mode (§5.2); \
+            without a selection buffer it is GL_INVALID_OPERATION, as in Mesa (reported)"]
+fn select_mode_without_a_selection_buffer_is_invalid_operation() {
+    let _ctx = fresh();
+    assert_eq!(glRenderMode(GL_SELECT), 0);
+    expect_error(
+        GL_INVALID_OPERATION,
+        "glRenderMode(GL_SELECT) before glSelectBuffer",
+    );
+    assert_eq!(render_mode(), GL_RENDER);
+}
+
+#[test]
 fn feedback_buffer_state_round_trips_for_every_type() {
     let _ctx = fresh();
     let mut buf = [SENTINEL_F; 64];
