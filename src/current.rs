@@ -72,8 +72,13 @@ pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
             let mut slot = slot.try_borrow_mut().ok()?;
             if slot.is_none() {
                 let handle = default_handle()?;
-                let context = handle.take();
-                *slot = Some(Current { handle, context });
+                // The default is current on another thread (its pointer was handed there):
+                // it is not current here too, until that thread releases it.
+                let context = handle.take()?;
+                *slot = Some(Current {
+                    handle,
+                    context: Some(context),
+                });
             }
             slot.as_mut()?.context.as_deref_mut().map(f)
         })

@@ -324,3 +324,43 @@ fn the_default_context_can_be_saved_and_made_current_again() {
         a.destroy();
     });
 }
+
+#[test]
+fn a_default_context_current_on_another_thread_is_not_current_at_home() {
+    // Thread T saves its default context D, switches to another context and hands D to
+    // thread U, which makes it current. While U has D, T has no current context: its GL calls
+    // reach nothing and fflGetCurrentContext is NULL. Once U releases D, T's next call finds D
+    // again, with its state.
+    let (to_u, u_rx) = mpsc::channel::<Handle>();
+    let (u_tx, from_u) = mpsc::channel::<()>();
+    let (to_t, t_rx) = mpsc::channel::<()>();
+    let u = thread::spawn(move || {
+        let d = u_rx.recv().unwrap();
+        assert_eq!(d.make_current(), GL_TRUE);
+        assert_eq!(normal(), [0.0, 1.0, 0.0]);
+        u_tx.send(()).unwrap();
+        t_rx.recv().unwrap();
+        glNormal3f(0.0, 0.0, -1.0);
+        assert_eq!(release(), GL_TRUE);
+        u_tx.send(()).unwrap();
+    });
+    on_new_thread(move || {
+        glNormal3f(0.0, 1.0, 0.0);
+        let d = Handle::current().unwrap();
+        let a = Handle::create();
+        a.make_current();
+        to_u.send(d).unwrap();
+        from_u.recv().unwrap();
+        // D is current on U: releasing `a` must not make D current here as well
+        release();
+        glNormal3f(1.0, 1.0, 1.0);
+        assert_eq!(Handle::current(), None, "D is current on two threads");
+        to_t.send(()).unwrap();
+        from_u.recv().unwrap();
+        // U released D: this thread's calls reach it again, with what U set
+        assert_eq!(normal(), [0.0, 0.0, -1.0]);
+        assert_eq!(Handle::current(), Some(d));
+        a.destroy();
+    });
+    u.join().unwrap();
+}
