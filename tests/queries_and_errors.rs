@@ -137,6 +137,108 @@ fn every_get_converts_per_6_1_2() {
     expect_no_error("conversions");
 }
 
+/// §6.1.2's integer mapping of colors, normals and depth range values.
+fn linear_int(v: f64) -> i32 {
+    ((INT_RANGE * v - 1.0) / 2.0 + 0.5)
+        .floor()
+        .clamp(i32::MIN as f64, i32::MAX as f64) as i32
+}
+
+#[test]
+fn the_four_gets_agree_on_every_pname() {
+    let _ctx = fresh();
+    // state away from the defaults, avoiding the .5 ties of rounding
+    glNormal3f(0.3, -0.6, 2.2);
+    glColor4f(0.1, 0.7, -0.2, 1.3);
+    glTexCoord4f(1.4, -2.7, 3.1, 0.9);
+    light_model_fv(GL_LIGHT_MODEL_AMBIENT, &[0.05, 0.6, 0.35, 0.9]);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
+    glLightModeli(
+        GL_LIGHT_MODEL_COLOR_CONTROL,
+        GL_SEPARATE_SPECULAR_COLOR as i32,
+    );
+    glColorMaterial(GL_BACK, GL_SPECULAR);
+    glMatrixMode(GL_PROJECTION);
+    glPushMatrix();
+    glFrustum(-1.0, 1.0, -1.0, 1.0, 1.0, 7.0);
+    glMatrixMode(GL_TEXTURE);
+    glScalef(3.3, 0.2, 1.0);
+    glMatrixMode(GL_MODELVIEW);
+    glRotatef(33.0, 1.0, 2.0, 3.0);
+    glTranslatef(4.2, -1.1, 0.0);
+    glViewport(3, 4, 500, 600);
+    glDepthRange(0.2, 0.9);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT6);
+    glEnable(GL_RESCALE_NORMAL);
+    expect_no_error("setup");
+
+    // (pname, value count, whether integers map linearly)
+    let table: [(GLenum, usize, bool); 28] = [
+        (GL_MAX_LIGHTS, 1, false),
+        (GL_CURRENT_NORMAL, 3, true),
+        (GL_CURRENT_COLOR, 4, true),
+        (GL_CURRENT_TEXTURE_COORDS, 4, false),
+        (GL_LIGHT_MODEL_AMBIENT, 4, true),
+        (GL_LIGHT_MODEL_LOCAL_VIEWER, 1, false),
+        (GL_LIGHT_MODEL_TWO_SIDE, 1, false),
+        (GL_LIGHT_MODEL_COLOR_CONTROL, 1, false),
+        (GL_COLOR_MATERIAL_FACE, 1, false),
+        (GL_COLOR_MATERIAL_PARAMETER, 1, false),
+        (GL_MATRIX_MODE, 1, false),
+        (GL_MODELVIEW_MATRIX, 16, false),
+        (GL_PROJECTION_MATRIX, 16, false),
+        (GL_TEXTURE_MATRIX, 16, false),
+        (GL_TRANSPOSE_MODELVIEW_MATRIX, 16, false),
+        (GL_TRANSPOSE_PROJECTION_MATRIX, 16, false),
+        (GL_TRANSPOSE_TEXTURE_MATRIX, 16, false),
+        (GL_MODELVIEW_STACK_DEPTH, 1, false),
+        (GL_PROJECTION_STACK_DEPTH, 1, false),
+        (GL_TEXTURE_STACK_DEPTH, 1, false),
+        (GL_MAX_MODELVIEW_STACK_DEPTH, 1, false),
+        (GL_MAX_PROJECTION_STACK_DEPTH, 1, false),
+        (GL_MAX_TEXTURE_STACK_DEPTH, 1, false),
+        (GL_VIEWPORT, 4, false),
+        (GL_DEPTH_RANGE, 2, true),
+        (GL_LIGHTING, 1, false),
+        (GL_LIGHT6, 1, false),
+        (GL_RESCALE_NORMAL, 1, false),
+    ];
+    for (pname, n, linear) in table {
+        let d = get_doubles(pname, n);
+        let f = get_floats(pname, n);
+        let i = get_ints(pname, n);
+        let b = get_bools(pname, n);
+        let want_f: Vec<f32> = d.iter().map(|&v| v as f32).collect();
+        let want_i: Vec<i32> = d
+            .iter()
+            .map(|&v| {
+                if linear {
+                    linear_int(v)
+                } else {
+                    v.round() as i32
+                }
+            })
+            .collect();
+        let want_b: Vec<GLboolean> = d.iter().map(|&v| (v != 0.0) as GLboolean).collect();
+        assert_eq!(f, want_f, "glGetFloatv({pname:#x}) vs glGetDoublev");
+        assert_eq!(i, want_i, "glGetIntegerv({pname:#x}) vs glGetDoublev");
+        assert_eq!(b, want_b, "glGetBooleanv({pname:#x}) vs glGetDoublev");
+    }
+    // spot checks of the values themselves
+    assert_eq!(get_floats(GL_CURRENT_NORMAL, 3), [0.3, -0.6, 2.2]);
+    assert_eq!(
+        get_floats(GL_CURRENT_TEXTURE_COORDS, 4),
+        [1.4, -2.7, 3.1, 0.9]
+    );
+    assert_eq!(get_ints(GL_CURRENT_TEXTURE_COORDS, 4), [1, -3, 3, 1]);
+    assert_eq!(get_int(GL_COLOR_MATERIAL_FACE), GL_BACK as i32);
+    assert_eq!(get_int(GL_PROJECTION_STACK_DEPTH), 2);
+    assert_eq!(get_ints(GL_VIEWPORT, 4), [3, 4, 500, 600]);
+    assert_approx_eq!(get_doubles(GL_DEPTH_RANGE, 2), [0.2, 0.9f64]);
+    expect_no_error("the four gets");
+}
+
 #[test]
 fn bad_pnames_are_invalid_enum_and_write_nothing() {
     let _ctx = fresh();

@@ -6,7 +6,7 @@ use crate::context::{Context, RenderMode};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use crate::state::arrays::ArrayKind;
-use crate::state::convert::{color_to_int, float_to_int};
+use crate::state::convert::{float_to_int, normalized_to_int};
 use crate::state::enables::{Capability, MAX_CLIP_PLANES};
 use crate::state::light::MAX_LIGHTS;
 use crate::state::raster::MAX_VIEWPORT_DIMS;
@@ -42,7 +42,7 @@ impl StateValue {
             StateValue::Bools(v) => v.iter().map(|&b| b as i32).collect(),
             StateValue::Ints(v) => v.clone(),
             StateValue::Floats(v) => v.iter().map(|&f| float_to_int(f as f32)).collect(),
-            StateValue::Normalized(v) => v.iter().map(|&f| color_to_int(f as f32)).collect(),
+            StateValue::Normalized(v) => v.iter().map(|&f| normalized_to_int(f)).collect(),
         }
     }
 

@@ -8,7 +8,13 @@ pub fn int_to_color(c: i32) -> f32 {
 /// A float color component mapped back to a signed 32-bit integer (§6.1.2), clamped. The
 /// mapping puts 0.0 exactly halfway between -1 and 0; ties round up, so 0.0 reads back as 0.
 pub fn color_to_int(f: f32) -> i32 {
-    let value = ((4_294_967_295.0 * f as f64) - 1.0) / 2.0;
+    normalized_to_int(f as f64)
+}
+
+/// `color_to_int` of a value GL keeps in double precision (the depth range), without first
+/// rounding it to a float: 0.2 reads back as 429496729, not 429496735.
+pub fn normalized_to_int(f: f64) -> i32 {
+    let value = ((4_294_967_295.0 * f) - 1.0) / 2.0;
     (value + 0.5)
         .floor()
         .clamp(i32::MIN as f64, i32::MAX as f64) as i32
