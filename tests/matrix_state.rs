@@ -651,6 +651,24 @@ fn matrix_commands_between_begin_and_end_are_invalid_operation() {
             "{name} between glBegin and glEnd changed the state"
         );
     }
+    // so is a NULL matrix
+    // SAFETY: NULL is allowed and must be reported, never dereferenced.
+    unsafe {
+        glBegin(GL_POINTS);
+        glLoadMatrixf(std::ptr::null());
+        glEnd();
+        expect_error(
+            GL_INVALID_OPERATION,
+            "glLoadMatrixf(NULL) between glBegin and glEnd",
+        );
+        glBegin(GL_POINTS);
+        glMultTransposeMatrixd(std::ptr::null());
+        glEnd();
+        expect_error(
+            GL_INVALID_OPERATION,
+            "glMultTransposeMatrixd(NULL) between glBegin and glEnd",
+        );
+    }
     // a degenerate frustum there is still GL_INVALID_OPERATION (checked first, as Mesa does)
     glBegin(GL_POINTS);
     glFrustum(1.0, 1.0, -1.0, 1.0, 0.0, 10.0);

@@ -17,6 +17,8 @@ unsafe fn with_matrix<T: Copy + Into<f64>>(
     // SAFETY: forwarded from the caller.
     let values = unsafe { read(m, 16) };
     with_context(|ctx| {
+        // between glBegin and glEnd the command itself is the error, NULL or not (§2.6.3)
+        ctx.outside_begin_end()?;
         if values.is_empty() {
             return Err(GlError::InvalidValue);
         }
