@@ -1432,7 +1432,7 @@ struct FflContext *fflGetCurrentContext(void);
 
 /*
  Destroys `context`. A context current on the calling thread is released first; one current
- on another thread, or the thread's default context, is not destroyed (GL_FALSE,
+ on another thread, or a thread's default context, is not destroyed (GL_FALSE,
  GL_INVALID_OPERATION).
 
  # Safety

@@ -15,13 +15,28 @@ use crate::error::{GlError, GlResult};
 pub struct FflContext {
     /// The context while no thread has it current.
     idle: Mutex<Option<Box<Context>>>,
+    /// Whether this is a thread's default context, which lives as long as its thread.
+    thread_default: bool,
 }
 
 impl FflContext {
     pub fn new() -> Arc<FflContext> {
         Arc::new(FflContext {
             idle: Mutex::new(Some(Box::new(Context::new()))),
+            thread_default: false,
         })
+    }
+
+    fn new_thread_default() -> Arc<FflContext> {
+        Arc::new(FflContext {
+            idle: Mutex::new(Some(Box::new(Context::new()))),
+            thread_default: true,
+        })
+    }
+
+    /// Whether this is some thread's default context (only the thread's end destroys it).
+    pub fn is_thread_default(&self) -> bool {
+        self.thread_default
     }
 
     fn take(&self) -> Option<Box<Context>> {
@@ -58,7 +73,7 @@ fn default_handle() -> Option<Arc<FflContext>> {
     DEFAULT
         .try_with(|slot| {
             slot.borrow_mut()
-                .get_or_insert_with(FflContext::new)
+                .get_or_insert_with(FflContext::new_thread_default)
                 .clone()
         })
         .ok()
@@ -124,17 +139,6 @@ pub fn current_handle() -> Option<Arc<FflContext>> {
         })
         .ok()
         .flatten()
-}
-
-/// Whether `handle` is this thread's default context (which only the thread's end destroys).
-pub fn is_thread_default(handle: &Arc<FflContext>) -> bool {
-    DEFAULT
-        .try_with(|slot| {
-            slot.borrow()
-                .as_ref()
-                .is_some_and(|d| Arc::ptr_eq(d, handle))
-        })
-        .unwrap_or(false)
 }
 
 /// Whether the context behind `handle` is current on some thread other than this one.

@@ -439,8 +439,6 @@ fn begin_and_end_errors() {
 }
 
 #[test]
-#[ignore = "src/commands/vertex.rs checks the mode before the glBegin/glEnd state; Mesa checks \
-            begin/end first (reported, not owned by this test file)"]
 fn nested_begin_with_a_bad_mode_is_invalid_operation_as_in_mesa() {
     let _ctx = fresh();
     glBegin(GL_POINTS);

@@ -47,7 +47,7 @@ pub extern "C" fn fflGetCurrentContext() -> *mut FflContext {
 }
 
 /// Destroys `context`. A context current on the calling thread is released first; one current
-/// on another thread, or the thread's default context, is not destroyed (GL_FALSE,
+/// on another thread, or a thread's default context, is not destroyed (GL_FALSE,
 /// GL_INVALID_OPERATION).
 ///
 /// # Safety
@@ -62,7 +62,7 @@ pub unsafe extern "C" fn fflDestroyContext(context: *mut FflContext) -> GLboolea
         Arc::increment_strong_count(context);
         Arc::from_raw(context.cast_const())
     };
-    if current::current_elsewhere(&handle) || current::is_thread_default(&handle) {
+    if current::current_elsewhere(&handle) || handle.is_thread_default() {
         with_context::<()>(|_| Err(GlError::InvalidOperation));
         return GL_FALSE;
     }

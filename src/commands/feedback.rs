@@ -62,6 +62,9 @@ impl Context {
         let new_mode = match mode {
             GL_RENDER => RenderMode::Render,
             GL_FEEDBACK => RenderMode::Feedback,
+            // Selection needs glSelectBuffer, which fflight does not have (as Mesa without
+            // a selection buffer).
+            GL_SELECT => return Err(GlError::InvalidOperation),
             _ => return Err(GlError::InvalidEnum),
         };
         if new_mode == RenderMode::Feedback && self.feedback.layout.is_none() {

@@ -32,10 +32,10 @@ impl Context {
 
     /// glBegin (§2.6.1).
     pub fn begin(&mut self, mode: GLenum) -> GlResult {
+        self.outside_begin_end()?;
         if mode > GL_POLYGON {
             return Err(GlError::InvalidEnum);
         }
-        self.outside_begin_end()?;
         self.primitive = Some(PrimitiveInProgress {
             mode,
             vertices: Vec::new(),
