@@ -23,6 +23,14 @@
  *   - A token `osmesa-exempt=<reason>` on such a line says OSMesa is known to
  *     differ from the spec there: the groups covered by `ref` are compared
  *     with the reference only, never across builds.
+ *   - A token `line-prim=<kind>` on a feedback segment line says the
+ *     segment comes from a line primitive and the spec gives it the token
+ *     <kind> (line_reset or line); the fflight build must have fed back
+ *     exactly that (ffl_print_feedback_prims prints these marks).
+ *   - A line `osmesa-known: <name>` in a program's header comment declares a
+ *     known OSMesa-vs-spec difference the comparison accepts under a narrow
+ *     rule. The only one is `line-reset`: fflight's `line_reset` where
+ *     OSMesa has `line`, on a segment marked `line-prim=line_reset`.
  *   - The first line of each program is a comment naming its mode,
  *     "ffl-test: differential" (both builds, outputs compared), "ffl-test:
  *     fflight-only" (the program checks itself; exit status decides) or
@@ -36,6 +44,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <math.h>
 
 #ifdef FFL_OSMESA
@@ -209,6 +218,194 @@ static inline int ffl_print_feedback(const char *prefix, const GLfloat *buf, GLi
         return 1;
     }
     return 0;
+}
+
+/* ---- feedback of whole primitives ---------------------------------------- */
+
+/* glPassThrough values from FFL_PRIM_MARK up mark the glBegin of primitive
+ * number (value - FFL_PRIM_MARK) of a feedback pass, so the printer knows
+ * which glBegin mode each token comes from. */
+#define FFL_PRIM_MARK 1000.0f
+#define FFL_MAX_PRIMS 1024
+
+static inline const char *ffl_mode_name(GLenum mode)
+{
+    switch (mode) {
+    case GL_POINTS: return "GL_POINTS";
+    case GL_LINES: return "GL_LINES";
+    case GL_LINE_STRIP: return "GL_LINE_STRIP";
+    case GL_LINE_LOOP: return "GL_LINE_LOOP";
+    case GL_TRIANGLES: return "GL_TRIANGLES";
+    case GL_TRIANGLE_STRIP: return "GL_TRIANGLE_STRIP";
+    case GL_TRIANGLE_FAN: return "GL_TRIANGLE_FAN";
+    case GL_QUADS: return "GL_QUADS";
+    case GL_QUAD_STRIP: return "GL_QUAD_STRIP";
+    case GL_POLYGON: return "GL_POLYGON";
+    default: return "unknown_mode";
+    }
+}
+
+static inline int ffl_is_line_mode(GLenum mode)
+{
+    return mode == GL_LINES || mode == GL_LINE_STRIP || mode == GL_LINE_LOOP;
+}
+
+/* How many tokens of each kind a feedback pass returned. */
+typedef struct {
+    long points, lines, line_resets, polygons, polygon_vertices, passes;
+} ffl_token_counts;
+
+/* Called after each fed-back vertex is printed, before its newline, so a
+ * program can add groups to the line (typically " ref rgba ..."): `mode` is
+ * the glBegin mode the token comes from (0 if unknown), `token` the feedback
+ * token, `vertices` the token's vertices (vertex_size values each), `k` the
+ * vertex printed. */
+typedef void (*ffl_vertex_note)(void *user, GLenum mode, GLenum token, const GLfloat *vertices,
+                                int nverts, int k, GLenum type);
+
+/* One feedback pass whose primitives are marked (see ffl_fb_begin). */
+typedef struct {
+    GLfloat *buf;
+    GLsizei size;
+    GLenum type;
+    int nprims;
+    GLenum modes[FFL_MAX_PRIMS];
+    ffl_token_counts counts;
+} ffl_fb;
+
+/* Zeroes the struct (its token counts add up over every pass). */
+static inline void ffl_fb_init(ffl_fb *fb)
+{
+    memset(fb, 0, sizeof *fb);
+}
+
+/* glFeedbackBuffer + glRenderMode(GL_FEEDBACK). */
+static inline void ffl_fb_start(ffl_fb *fb, GLfloat *buf, GLsizei size, GLenum type)
+{
+    fb->buf = buf;
+    fb->size = size;
+    fb->type = type;
+    fb->nprims = 0;
+    glFeedbackBuffer(size, type, buf);
+    glRenderMode(GL_FEEDBACK);
+}
+
+/* glPassThrough(marker) then glBegin(mode). */
+static inline void ffl_fb_begin(ffl_fb *fb, GLenum mode)
+{
+    int id = fb->nprims < FFL_MAX_PRIMS ? fb->nprims++ : FFL_MAX_PRIMS - 1;
+    fb->modes[id] = mode;
+    glPassThrough(FFL_PRIM_MARK + (GLfloat)id);
+    glBegin(mode);
+}
+
+/*
+ * Prints a feedback buffer like ffl_print_feedback, knowing which glBegin
+ * each token comes from: a marker prints as "<prefix> begin <mode>", any
+ * other pass-through as "<prefix> pass <value>". A segment from a line
+ * primitive carries "line-prim=<kind>": the token the spec gives it (§3.4.2,
+ * §5.3: the line stipple counter is reset before every segment of GL_LINES
+ * and at the start of each strip or loop, so the first segment fed back of a
+ * strip or loop is a GL_LINE_RESET_TOKEN, the rest GL_LINE_TOKEN; a segment
+ * clipped away entirely advances nothing, so the reset goes to the first
+ * segment that is fed back). Segments of polygon outlines carry nothing: how
+ * a polygon is split is the implementation's choice. Counts the tokens into
+ * `counts` (if given). Returns 0 if the buffer parsed cleanly.
+ */
+static inline int ffl_print_feedback_prims(const char *prefix, const GLfloat *buf, GLint n,
+                                           GLenum type, const GLenum *modes, int nmodes,
+                                           ffl_vertex_note note, void *user,
+                                           ffl_token_counts *counts)
+{
+    int vs = ffl_feedback_vertex_size(type);
+    GLenum mode = 0;
+    int line_seen = 0;
+    ffl_token_counts dummy;
+    GLint i = 0;
+    if (counts == NULL)
+        counts = &dummy;
+    while (i < n) {
+        GLfloat token = buf[i++];
+        GLenum kind;
+        int nverts, k;
+        const char *name;
+        if (token == (GLfloat)GL_PASS_THROUGH_TOKEN) {
+            GLfloat v;
+            int id;
+            if (i >= n)
+                break;
+            v = buf[i++];
+            id = (int)(v - FFL_PRIM_MARK);
+            if (v >= FFL_PRIM_MARK && (GLfloat)id == v - FFL_PRIM_MARK && id < nmodes) {
+                mode = modes[id];
+                line_seen = 0;
+                printf("%s begin %s\n", prefix, ffl_mode_name(mode));
+            } else {
+                counts->passes++;
+                printf("%s pass", prefix);
+                ffl_pf(v);
+                printf("\n");
+            }
+            continue;
+        }
+        if (token == (GLfloat)GL_POINT_TOKEN) {
+            kind = GL_POINT_TOKEN; name = "point"; nverts = 1;
+            counts->points++;
+        } else if (token == (GLfloat)GL_LINE_TOKEN) {
+            kind = GL_LINE_TOKEN; name = "line"; nverts = 2;
+            counts->lines++;
+        } else if (token == (GLfloat)GL_LINE_RESET_TOKEN) {
+            kind = GL_LINE_RESET_TOKEN; name = "line_reset"; nverts = 2;
+            counts->line_resets++;
+        } else if (token == (GLfloat)GL_POLYGON_TOKEN) {
+            if (i >= n)
+                break;
+            kind = GL_POLYGON_TOKEN; name = "polygon"; nverts = (int)buf[i++];
+            counts->polygons++;
+            counts->polygon_vertices += nverts;
+        } else {
+            printf("%s unknown_token", prefix);
+            ffl_pf(token);
+            printf("\n");
+            return 1;
+        }
+        printf("%s %s %d", prefix, name, nverts);
+        if (kind != GL_POINT_TOKEN && kind != GL_POLYGON_TOKEN && ffl_is_line_mode(mode)) {
+            printf(" line-prim=%s", mode == GL_LINES || !line_seen ? "line_reset" : "line");
+            line_seen = 1;
+        }
+        printf("\n");
+        if (nverts < 0 || i + (GLint)nverts * vs > n) {
+            printf("%s truncated\n", prefix);
+            return 1;
+        }
+        for (k = 0; k < nverts; k++) {
+            printf("%s  v", prefix);
+            ffl_print_feedback_vertex(buf + i + k * vs, type);
+            if (note != NULL)
+                note(user, mode, kind, buf + i, nverts, k, type);
+            printf("\n");
+        }
+        i += nverts * vs;
+    }
+    if (i != n) {
+        printf("%s truncated\n", prefix);
+        return 1;
+    }
+    return 0;
+}
+
+/* glRenderMode(GL_RENDER), then prints "<tag> count <n>" and the buffer
+ * (ffl_print_feedback_prims). Returns 0 on success, 1 if the buffer
+ * overflowed or did not parse. */
+static inline int ffl_fb_finish(ffl_fb *fb, const char *tag, ffl_vertex_note note, void *user)
+{
+    GLint n = glRenderMode(GL_RENDER);
+    printf("%s count %d\n", tag, (int)n);
+    if (n < 0 || n > fb->size)
+        return 1;
+    return ffl_print_feedback_prims(tag, fb->buf, n, fb->type, fb->modes, fb->nprims, note,
+                                    user, &fb->counts);
 }
 
 /* ---- deterministic pseudo-random numbers (splitmix64) ------------------- */
