@@ -452,4 +452,76 @@ static inline int ffl_rng_chance(ffl_rng *r, double p)
     return ffl_rng_unit(r) < p;
 }
 
+/* ---- random shapes ------------------------------------------------------ */
+
+/* Positions of `count` vertices for a glBegin(mode), around (cx, cy) with
+ * radius about `size` in x and y and z in [-depth, depth]: a cloud for
+ * points, lines and separate triangles; a zigzag band for triangle and quad
+ * strips (every quad of a quad strip convex); a fan around its first vertex
+ * at increasing angles; convex quads (each group of four on an ellipse) and a
+ * convex polygon (on an ellipse, at increasing angles). Orientations (clockwise
+ * or counterclockwise) are random. */
+static inline void ffl_shape(ffl_rng *r, GLenum mode, int count, double cx, double cy,
+                             double size, double depth, float (*p)[3])
+{
+    double dir = ffl_rng_unit(r) * 2.0 * FFL_PI, ux = cos(dir), uy = sin(dir);
+    double sign = ffl_rng_chance(r, 0.5) ? 1.0 : -1.0;
+    int k;
+    for (k = 0; k < count; k++)
+        p[k][2] = ffl_rng_float(r, -depth, depth);
+    switch (mode) {
+    case GL_TRIANGLE_STRIP:
+    case GL_QUAD_STRIP:
+        for (k = 0; k < count; k++) {
+            double t = -size + 2.0 * size * ((double)(k / 2) + 0.3 * ffl_rng_unit(r)) /
+                                 (double)(count / 2 + 1);
+            double a = sign * (k % 2 ? -1.0 : 1.0) * size * (0.2 + 0.5 * ffl_rng_unit(r));
+            p[k][0] = (float)(cx + t * ux - a * uy);
+            p[k][1] = (float)(cy + t * uy + a * ux);
+        }
+        break;
+    case GL_TRIANGLE_FAN:
+    case GL_POLYGON: {
+        double angle = 0.0, step = 2.0 * FFL_PI / (double)(count > 2 ? count : 3);
+        double ex = size * (0.5 + 0.5 * ffl_rng_unit(r)), ey = size * (0.5 + 0.5 * ffl_rng_unit(r));
+        for (k = 0; k < count; k++) {
+            if (mode == GL_TRIANGLE_FAN && k == 0) {
+                p[k][0] = (float)cx;
+                p[k][1] = (float)cy;
+                continue;
+            }
+            angle += step * (mode == GL_POLYGON ? 0.5 + 0.5 * ffl_rng_unit(r)
+                                                : 0.3 + 1.2 * ffl_rng_unit(r));
+            p[k][0] = (float)(cx + ex * cos(sign * angle) * ux - ey * sin(sign * angle) * uy);
+            p[k][1] = (float)(cy + ex * cos(sign * angle) * uy + ey * sin(sign * angle) * ux);
+        }
+        break;
+    }
+    case GL_QUADS:
+        for (k = 0; k < count; k++) {
+            double qx = cx + size * (ffl_rng_unit(r) - 0.5), qy = cy + size * (ffl_rng_unit(r) - 0.5);
+            double angle = ffl_rng_unit(r) * 2.0 * FFL_PI, e = size * (0.3 + 0.4 * ffl_rng_unit(r));
+            int j;
+            if (k + 4 > count) { /* the incomplete rest: anywhere */
+                p[k][0] = (float)qx;
+                p[k][1] = (float)qy;
+                continue;
+            }
+            for (j = 0; j < 4; j++, k++) {
+                angle += sign * (0.3 + 0.7 * ffl_rng_unit(r)) * FFL_PI / 2.0;
+                p[k][0] = (float)(qx + e * cos(angle));
+                p[k][1] = (float)(qy + 0.7 * e * sin(angle));
+            }
+            k--;
+        }
+        break;
+    default:
+        for (k = 0; k < count; k++) {
+            p[k][0] = (float)(cx + size * (2.0 * ffl_rng_unit(r) - 1.0));
+            p[k][1] = (float)(cy + size * (2.0 * ffl_rng_unit(r) - 1.0));
+        }
+        break;
+    }
+}
+
 #endif /* FFL_TEST_H */

@@ -817,6 +817,9 @@ c_programs!(
     errors,
     integer_forms,
     prim_lines,
+    prim_triangles,
+    prim_strips_fans,
+    prim_quads_polygons,
 );
 
 /// The line-reset rule accepts exactly fflight `line_reset` vs OSMesa `line`
