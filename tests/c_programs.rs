@@ -786,10 +786,14 @@ fn indent(s: &str) -> String {
         .join("\n")
 }
 
+/// One test per program. A program that shows a reported fflight bug is
+/// listed with `#[ignore = "fflight bug (reported): ..."]` until the fix
+/// lands (`cargo test --test c_programs -- --ignored` runs it).
 macro_rules! c_programs {
-    ($($name:ident),* $(,)?) => {
+    ($($(#[$attr:meta])* $name:ident),* $(,)?) => {
         $(
             #[test]
+            $(#[$attr])*
             fn $name() {
                 run_program(stringify!($name));
             }
@@ -820,6 +824,11 @@ c_programs!(
     prim_triangles,
     prim_strips_fans,
     prim_quads_polygons,
+    clip_view_volume,
+    #[ignore = "fflight bug (reported): src/pipeline/mod.rs feedback_line returns on a segment \
+                clipped away before it records the stipple reset, so a strip or loop whose first \
+                segment is invisible feeds back no GL_LINE_RESET_TOKEN"]
+    clip_line_strip_reset,
 );
 
 /// The line-reset rule accepts exactly fflight `line_reset` vs OSMesa `line`
