@@ -41,6 +41,9 @@ typedef struct {
     int n;
     vref_vertex v[VREF_MAX_VERTICES];
     long matched, unmatched;
+    /* the enabled user clip planes, in eye coordinates as GL stored them */
+    int nplanes;
+    double planes[6][4];
 } vref_set;
 
 /* Starts recording: reads the projection, viewport, depth range and front
@@ -65,6 +68,33 @@ static inline void vref_start(vref_set *s, ref_state *ref)
     s->front_ccw = iv[0] == GL_CCW;
     s->polygon_face = -1;
     s->n = 0;
+    s->nplanes = 0;
+    for (k = 0; k < 6; k++) {
+        if (glIsEnabled(GL_CLIP_PLANE0 + k) == GL_TRUE)
+            glGetClipPlane(GL_CLIP_PLANE0 + k, s->planes[s->nplanes++]);
+    }
+}
+
+/* Whether the object-space point is inside the clip volume by a margin
+ * (`margin` times the clip w, or times the plane's eye-space norm), by the
+ * reference's arithmetic on the stored matrices and planes. */
+static inline int vref_inside(const vref_set *s, const float *p, double margin)
+{
+    double obj[4], eye[4], clip[4];
+    int k;
+    obj[0] = p[0]; obj[1] = p[1]; obj[2] = p[2]; obj[3] = 1.0;
+    ref_eye_position(s->ref, obj, eye);
+    ref_mat_transform4(&s->projection, eye, clip);
+    for (k = 0; k < 3; k++)
+        if (fabs(clip[k]) > clip[3] * (1.0 - margin))
+            return 0;
+    for (k = 0; k < s->nplanes; k++) {
+        const double *q = s->planes[k];
+        double norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+        if (q[0] * eye[0] + q[1] * eye[1] + q[2] * eye[2] + q[3] * eye[3] < margin * norm)
+            return 0;
+    }
+    return 1;
 }
 
 /* glVertex3f, recording the vertex's reference window position and colors
@@ -167,6 +197,9 @@ static inline void vref_random_attributes(vref_set *s, ffl_rng *r)
 }
 
 #define VREF_MAX_PRIMITIVE 64
+#ifndef VREF_VISIBLE_FIRST_SEGMENT
+#define VREF_VISIBLE_FIRST_SEGMENT 1
+#endif
 
 /* One glBegin(mode)/glEnd of `count` vertices shaped by ffl_shape, each with
  * its own random color and normal, marked for the feedback printer. */
@@ -175,9 +208,21 @@ static inline void vref_draw_shape(vref_set *s, ffl_fb *fb, ffl_rng *r, GLenum m
 {
     float p[VREF_MAX_PRIMITIVE][3];
     int k;
+    int tries = 0;
     if (count > VREF_MAX_PRIMITIVE)
         count = VREF_MAX_PRIMITIVE;
     ffl_shape(r, mode, count, cx, cy, size, depth, p);
+    /* VREF_VISIBLE_FIRST_SEGMENT: the first segment of a strip or loop is
+     * kept inside the clip volume (a new shape, nearer the center, until it
+     * is): fflight drops the stipple reset of a strip whose first segment is
+     * clipped away (a reported bug, shown by clip_line_strip_reset.c), and
+     * that program alone should fail for it. Remove once fixed. */
+    while (VREF_VISIBLE_FIRST_SEGMENT && (mode == GL_LINE_STRIP || mode == GL_LINE_LOOP) &&
+           count >= 2 && !(vref_inside(s, p[0], 0.01) && vref_inside(s, p[1], 0.01)) &&
+           tries++ < 100) {
+        double shrink = 1.0 - (double)tries / 100.0;
+        ffl_shape(r, mode, count, cx * shrink, cy * shrink, size * shrink, depth * shrink, p);
+    }
     ffl_fb_begin(fb, mode);
     for (k = 0; k < count; k++) {
         vref_random_attributes(s, r);
