@@ -48,6 +48,10 @@ typedef struct FflCapturedVertex {
   GLfloat back_secondary[4];
   GLfloat tex_coord[4];
   GLboolean edge_flag;
+  /*
+   Zero: the struct has no undefined padding bytes (memcmp works).
+   */
+  GLubyte reserved[3];
 } FflCapturedVertex;
 
 /*
@@ -79,6 +83,10 @@ typedef struct FflCapturedPrimitive {
    Triangles: whether edge k (vertices[k] to the next) is drawn in polygon mode GL_LINE.
    */
   GLboolean edges[3];
+  /*
+   Zero: the struct has no undefined padding bytes (memcmp works).
+   */
+  GLubyte reserved;
 } FflCapturedPrimitive;
 
 #ifndef GL_FALSE

@@ -25,6 +25,8 @@ pub struct FflCapturedVertex {
     pub back_secondary: [GLfloat; 4],
     pub tex_coord: [GLfloat; 4],
     pub edge_flag: GLboolean,
+    /// Zero: the struct has no undefined padding bytes (memcmp works).
+    pub reserved: [GLubyte; 3],
 }
 
 impl From<&ProcessedVertex> for FflCapturedVertex {
@@ -38,6 +40,7 @@ impl From<&ProcessedVertex> for FflCapturedVertex {
             back_secondary: v.colors.back.secondary.to_array(),
             tex_coord: v.tex_coord.to_array(),
             edge_flag: v.edge_flag.into(),
+            reserved: [0; 3],
         }
     }
 }
@@ -59,6 +62,8 @@ pub struct FflCapturedPrimitive {
     pub vertices: [GLuint; 3],
     /// Triangles: whether edge k (vertices[k] to the next) is drawn in polygon mode GL_LINE.
     pub edges: [GLboolean; 3],
+    /// Zero: the struct has no undefined padding bytes (memcmp works).
+    pub reserved: GLubyte,
 }
 
 /// A count or index as a GLuint, saturated.
@@ -75,6 +80,7 @@ impl From<&CapturedPrimitive> for FflCapturedPrimitive {
             vertex_count: gl_uint(p.vertex_count()),
             vertices: p.vertices.map(gl_uint),
             edges: p.edges.map(GLboolean::from),
+            reserved: 0,
         }
     }
 }
