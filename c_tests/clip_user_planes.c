@@ -130,6 +130,6 @@ int main(void)
     failed |= pass("six_fill", &ref);
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     failed |= pass("six_line", &ref);
-    printf("matched %ld unmatched %ld\n", vref.matched, vref.unmatched);
+    vref_print_counts(&vref);
     return failed;
 }

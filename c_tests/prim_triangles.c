@@ -66,6 +66,6 @@ int main(void)
     lights(&ref);
     mirror_enable(&ref, GL_LIGHTING, 1);
     failed |= pass("lit", &ref);
-    printf("matched %ld unmatched %ld\n", vref.matched, vref.unmatched);
+    vref_print_counts(&vref);
     return failed;
 }

@@ -289,7 +289,7 @@ static inline void random_material(ffl_rng *rs, ffl_rng *r, ref_state *ref)
  *  - vertex_w: a vertex given with w != 1 is lit by Mesa at (x, y, z)
  *    instead of (x/w, y/w, z/w); it shows with a positional light or a
  *    local viewer (see osmesa_diff_vertex_w.c). */
-static const char *osmesa_exemption(const ref_state *ref, const double *obj)
+static inline const char *osmesa_exemption(const ref_state *ref, const double *obj)
 {
     ref_light_terms t[REF_MAX_LIGHTS];
     double v3[3], n[3];

@@ -11,7 +11,8 @@
  * clipping created) gets " ref xyz ... rgba ...", the reference's values for
  * the face that the spec selects (§2.14.1: a polygon's facing is the sign of
  * its window-space area; points and lines use the front colors), and
- * " tol ..." for comparisons with float32 implementations. Where the face
+ * " tol ..." for comparisons with float32 implementations; any other
+ * fed-back vertex, made by clipping, gets the mark " clip-made". Where the face
  * cannot be known from the token alone (a point or an outline segment of a
  * polygon in GL_POINT or GL_LINE mode, with two-sided lighting), the program
  * may say which face it drew (`polygon_face`); otherwise no ref is printed.
@@ -40,7 +41,7 @@ typedef struct {
     int polygon_face;
     int n;
     vref_vertex v[VREF_MAX_VERTICES];
-    long matched, unmatched;
+    long matched, unmatched, clip_made; /* with a ref, face unknown, made by clipping */
     /* the enabled user clip planes, in eye coordinates as GL stored them */
     int nplanes;
     double planes[6][4];
@@ -156,7 +157,10 @@ static inline void vref_note(void *user, GLenum mode, GLenum token, const GLfloa
         }
     }
     if (best < 0) {
-        s->unmatched++;
+        /* a vertex made by clipping (its coordinates are compared with the
+         * harness's tolerance for such vertices) */
+        s->clip_made++;
+        printf(" clip-made");
         return;
     }
     /* §2.14.1: the back colors only for back-facing polygons with two-sided
@@ -168,6 +172,10 @@ static inline void vref_note(void *user, GLenum mode, GLenum token, const GLfloa
         } else if (s->polygon_face >= 0) {
             face = s->polygon_face;
         } else {
+            if (getenv("VREF_DEBUG") != NULL)
+                fprintf(stderr, "face unknown: front %.9g %.9g %.9g back %.9g %.9g %.9g\n",
+                        s->v[best].color[0][0], s->v[best].color[0][1], s->v[best].color[0][2],
+                        s->v[best].color[1][0], s->v[best].color[1][1], s->v[best].color[1][2]);
             s->unmatched++;
             return;
         }
@@ -194,6 +202,13 @@ static inline void vref_random_attributes(vref_set *s, ffl_rng *r)
     n[1] = ffl_rng_float(r, -0.6, 0.6);
     n[2] = ffl_rng_float(r, 0.5, 1);
     mirror_normal3f(s->ref, n[0], n[1], n[2]);
+}
+
+/* "vertices with_ref <n> made_by_clipping <n> face_unknown <n>" */
+static inline void vref_print_counts(const vref_set *s)
+{
+    printf("vertices with_ref %ld made_by_clipping %ld face_unknown %ld\n", s->matched,
+           s->clip_made, s->unmatched);
 }
 
 #define VREF_MAX_PRIMITIVE 64
