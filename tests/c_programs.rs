@@ -90,13 +90,7 @@ fn is_coordinate_label(label: &str) -> bool {
 /// where an OSMesa value is compared (OSMesa vs reference, fflight vs OSMesa):
 /// OSMesa evaluates in float32. fflight evaluates in double from the stored
 /// state, and is held to COLOR_TOLERANCE against the reference everywhere.
-fn tolerance(
-    label: &str,
-    component: usize,
-    a: f64,
-    b: f64,
-    line_tolerance: Option<f64>,
-) -> f64 {
+fn tolerance(label: &str, component: usize, a: f64, b: f64, line_tolerance: Option<f64>) -> f64 {
     if is_coordinate_label(label) {
         coordinate_tolerance(component, a.abs().max(b.abs()))
     } else {
