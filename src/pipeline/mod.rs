@@ -90,15 +90,17 @@ impl Context {
 
     /// A segment, clipped; flat shading gives both ends the provoking (second) vertex's color.
     fn feedback_line(&mut self, planes: &ClipPlanes, ends: [&ProcessedVertex; 2], reset: bool) {
+        if reset {
+            // The counter restarts even if this segment is clipped away: it advances only
+            // with the fragments of a drawn segment (§3.4.2).
+            self.feedback.reset_line_stipple();
+        }
         let Some(clipped) = clip_line(planes, ends[0], ends[1]) else {
             return;
         };
         let flat = self.flat_shading().then_some(ends[1].colors.front.primary);
         let fed =
             clipped.map(|v| feedback_vertex(self, &v, flat.unwrap_or(v.colors.front.primary)));
-        if reset {
-            self.feedback.reset_line_stipple();
-        }
         self.feedback.line(&fed);
     }
 
