@@ -4,12 +4,18 @@
 //! glDrawRangeElements.
 //!
 //! The pointer commands only store the address. A draw reads, for each enabled array, the
-//! bytes of exactly the elements its indices reference (from the smallest to the largest
-//! index actually used), never more: glDrawRangeElements' start and end are not trusted.
-//! What cannot be checked is whether the application's arrays really hold those elements
-//! (GL makes that the application's duty: a glDrawArrays count larger than the arrays, or
-//! an index past their end, reads past them as it would in any GL); a NULL pointer,
-//! however, is caught: GL_INVALID_OPERATION, nothing is drawn.
+//! bytes of exactly the elements its indices reference (a slice from the smallest to the
+//! largest index actually used, of which only the referenced elements are decoded), never
+//! more: glDrawRangeElements' start and end are not trusted, and a draw without the vertex
+//! array reads nothing, not even its indices.
+//!
+//! What cannot be checked is whether the application's memory really holds what the call
+//! says it does: GL makes that the application's duty, and a glDrawArrays count larger than
+//! the arrays, a glDrawElements count larger than the index array, or an index past the end
+//! of the arrays reads past them as it would in any GL. A NULL pointer, however, is caught:
+//! GL_INVALID_OPERATION, nothing is drawn. Address arithmetic that would overflow is
+//! GL_INVALID_VALUE; a draw whose vertices do not fit in memory is GL_OUT_OF_MEMORY (before
+//! any array element is read).
 
 use std::ffi::c_void;
 

@@ -384,7 +384,8 @@ impl Context {
     /// lit exactly as the equivalent immediate-mode calls light it (same
     /// `DerivedState::process`; with color material on, each vertex's color stands in for
     /// the tracked material, as after a glColor). The current attributes are left as they
-    /// were (GL 1.5 §2.8 leaves them undefined after a draw).
+    /// were (GL 1.5 §2.8 leaves them undefined after a draw), and so is the material color
+    /// material tracks: it follows the current color.
     ///
     /// GL_INVALID_OPERATION when `sources` misses bytes of an enabled array;
     /// GL_OUT_OF_MEMORY when the vertices do not fit in memory.
