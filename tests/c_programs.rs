@@ -869,6 +869,8 @@ c_programs!(
     two_sided_polygons,
     shade_model_smooth,
     random_meshes,
+    feedback_types_polygons,
+    feedback_overflow_polygons,
     #[ignore = "fflight bug (reported): src/pipeline/mod.rs feedback_line returns on a segment \
                 clipped away before it records the stipple reset, so a strip or loop whose first \
                 segment is invisible feeds back no GL_LINE_RESET_TOKEN"]
