@@ -137,6 +137,22 @@ static inline double vref_area(const GLfloat *vertices, int nverts, int size)
     return a;
 }
 
+/* The index of the drawn vertex at the fed-back vertex's window position
+ * (x, y within VREF_MATCH pixels), or -1. */
+static inline int vref_index_of(const vref_set *s, const GLfloat *fed)
+{
+    int i, best = -1;
+    double best_d = VREF_MATCH;
+    for (i = 0; i < s->n; i++) {
+        double d = fabs(fed[0] - s->v[i].window[0]) + fabs(fed[1] - s->v[i].window[1]);
+        if (d <= best_d) {
+            best_d = d;
+            best = i;
+        }
+    }
+    return best;
+}
+
 /* The vertex note (ffl_vertex_note) that prints the reference's values for a
  * fed-back vertex at a drawn vertex's position. `user` is the vref_set. */
 static inline void vref_note(void *user, GLenum mode, GLenum token, const GLfloat *vertices,
@@ -145,17 +161,10 @@ static inline void vref_note(void *user, GLenum mode, GLenum token, const GLfloa
     vref_set *s = (vref_set *)user;
     int size = ffl_feedback_vertex_size(type);
     const GLfloat *fed = vertices + k * size;
-    int i, best = -1, face = 0;
-    double best_d = VREF_MATCH;
+    int best, face = 0;
     if (type == GL_2D || type == GL_3D)
         return; /* no color to check */
-    for (i = 0; i < s->n; i++) {
-        double d = fabs(fed[0] - s->v[i].window[0]) + fabs(fed[1] - s->v[i].window[1]);
-        if (d <= best_d) {
-            best_d = d;
-            best = i;
-        }
-    }
+    best = vref_index_of(s, fed);
     if (best < 0) {
         /* a vertex made by clipping (its coordinates are compared with the
          * harness's tolerance for such vertices) */
