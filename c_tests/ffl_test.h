@@ -23,6 +23,9 @@
  *   - A token `osmesa-exempt=<reason>` on such a line says OSMesa is known to
  *     differ from the spec there: the groups covered by `ref` are compared
  *     with the reference only, never across builds.
+ *   - A token `clip-made` on a line says its vertex was made by clipping:
+ *     its window coordinates get the harness's tolerance for such vertices
+ *     (see CLIP_MADE_COORDINATE_TOLERANCE in tests/c_programs.rs).
  *   - A token `line-prim=<kind>` on a feedback segment line says the
  *     segment comes from a line primitive and the spec gives it the token
  *     <kind> (line_reset or line); the fflight build must have fed back

@@ -13,6 +13,10 @@
 //!   both builds run and their outputs are printed, only the fflight build is
 //!   checked against the program's reference.
 //!
+//! Tolerances: see COLOR_TOLERANCE, coordinate_tolerance and
+//! CLIP_MADE_COORDINATE_TOLERANCE below; a line's own `tol` widens only
+//! comparisons involving OSMesa (float32), never fflight against the reference.
+//!
 //! A program may declare, in its header comment, a known OSMesa-vs-spec
 //! difference that the fflight-vs-OSMesa comparison accepts under a narrow
 //! rule (`osmesa-known: line-reset`, see [`Known`]); fflight is still checked
