@@ -43,8 +43,9 @@ static const shape shapes[] = {
     { GL_LINES, 2, { { 0.2f, 0.1f, 3 }, { 0.5f, 0.5f, -5 } } },                   /* behind */
     { GL_LINES, 2, { { 0.1f, 0.3f, -0.2f }, { -0.4f, 0.2f, -15 } } },             /* near, far */
     { GL_LINES, 2, { { 9, 9, -5 }, { 12, 9, -5 } } },                             /* outside */
-    /* (a strip whose first segment is clipped away: clip_line_strip_reset.c) */
     { GL_LINE_STRIP, 4, { { 3, 0, -5 }, { 7, 1, -5 }, { 1, 1, -5 }, { -1, -7, -5 } } },
+    /* a strip whose first segment is clipped away (clip_line_strip_reset.c) */
+    { GL_LINE_STRIP, 4, { { 8, 0, -5 }, { 7, 1, -5 }, { 1, 1, -5 }, { -1, -7, -5 } } },
     { GL_LINE_LOOP, 3, { { -2, 0, 2 }, { 2, 1, -5 }, { 0, -2, -5 } } },
     { GL_POINTS, 4, { { 0.5f, 0.5f, -5 }, { -6, 0, -5 }, { 0, 0, 2 }, { 0, 0, -11 } } },
 };

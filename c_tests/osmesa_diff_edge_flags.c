@@ -33,11 +33,11 @@ static void collect(void *user, GLenum mode, GLenum token, const GLfloat *vertic
     (void)user; (void)mode;
     if (k != 0)
         return;
-    a = vref_index_of(&vref, vertices);
+    a = vref_index_of(&vref, vertices, NULL);
     if (token == GL_POINT_TOKEN) {
         if (a < 0) unknown++; else got_point[a]++;
     } else if (nverts == 2) {
-        b = vref_index_of(&vref, vertices + size);
+        b = vref_index_of(&vref, vertices + size, NULL);
         if (a < 0 || b < 0) unknown++; else got_edge[a][b]++;
     }
 }

@@ -54,7 +54,7 @@ static void flat_note(void *user, GLenum mode, GLenum token, const GLfloat *vert
     int idx[16], n, size = ffl_feedback_vertex_size(type), p;
     (void)user; (void)token;
     for (n = 0; n < nverts && n < 16; n++) {
-        idx[n] = vref_index_of(&vref, vertices + n * size);
+        idx[n] = vref_index_of(&vref, vertices + n * size, vertices + n * size + 2);
         if (idx[n] < 0)
             return;
     }

@@ -20,9 +20,7 @@
  * (osmesa_diff_shininess0_attenuation.c, osmesa_diff_zero_pow_zero.c) and
  * vertices with w != 1 (osmesa_diff_vertex_w.c), and two-sided lighting with
  * color material tracking the back face alone
- * (osmesa_diff_back_color_material.c). The first segment of each
- * line strip and loop stays inside the clip volume (see vertex_ref.h:
- * clip_line_strip_reset.c shows the fflight bug this avoids).
+ * (osmesa_diff_back_color_material.c).
  *
  * osmesa-known: line-reset
  * (OSMesa feeds back GL_LINE_TOKEN where the spec resets the stipple.)

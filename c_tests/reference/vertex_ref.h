@@ -22,7 +22,13 @@
 #define FFL_VERTEX_REF_H
 
 #define VREF_MAX_VERTICES 4096
-#define VREF_MATCH 1e-3
+/* A fed-back vertex is a drawn vertex if its window x and y are within
+ * VREF_MATCH pixels (|dx| + |dy|) and its depth within VREF_MATCH_Z of the
+ * drawn vertex's reference position: drawn vertices land within 1e-5 of it
+ * in both builds, while a vertex clipping made near a drawn one (the end of
+ * a short clipped segment) must not be taken for it. */
+#define VREF_MATCH 3e-5
+#define VREF_MATCH_Z 3e-6
 
 typedef struct {
     double window[4]; /* x, y, z window coordinates, w the clip w */
@@ -42,9 +48,6 @@ typedef struct {
     int n;
     vref_vertex v[VREF_MAX_VERTICES];
     long matched, unmatched, clip_made; /* with a ref, face unknown, made by clipping */
-    /* the enabled user clip planes, in eye coordinates as GL stored them */
-    int nplanes;
-    double planes[6][4];
 } vref_set;
 
 /* Starts recording: reads the projection, viewport, depth range and front
@@ -69,33 +72,6 @@ static inline void vref_start(vref_set *s, ref_state *ref)
     s->front_ccw = iv[0] == GL_CCW;
     s->polygon_face = -1;
     s->n = 0;
-    s->nplanes = 0;
-    for (k = 0; k < 6; k++) {
-        if (glIsEnabled(GL_CLIP_PLANE0 + k) == GL_TRUE)
-            glGetClipPlane(GL_CLIP_PLANE0 + k, s->planes[s->nplanes++]);
-    }
-}
-
-/* Whether the object-space point is inside the clip volume by a margin
- * (`margin` times the clip w, or times the plane's eye-space norm), by the
- * reference's arithmetic on the stored matrices and planes. */
-static inline int vref_inside(const vref_set *s, const float *p, double margin)
-{
-    double obj[4], eye[4], clip[4];
-    int k;
-    obj[0] = p[0]; obj[1] = p[1]; obj[2] = p[2]; obj[3] = 1.0;
-    ref_eye_position(s->ref, obj, eye);
-    ref_mat_transform4(&s->projection, eye, clip);
-    for (k = 0; k < 3; k++)
-        if (fabs(clip[k]) > clip[3] * (1.0 - margin))
-            return 0;
-    for (k = 0; k < s->nplanes; k++) {
-        const double *q = s->planes[k];
-        double norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-        if (q[0] * eye[0] + q[1] * eye[1] + q[2] * eye[2] + q[3] * eye[3] < margin * norm)
-            return 0;
-    }
-    return 1;
 }
 
 /* glVertex3f, recording the vertex's reference window position and colors
@@ -138,13 +114,15 @@ static inline double vref_area(const GLfloat *vertices, int nverts, int size)
 }
 
 /* The index of the drawn vertex at the fed-back vertex's window position
- * (x, y within VREF_MATCH pixels), or -1. */
-static inline int vref_index_of(const vref_set *s, const GLfloat *fed)
+ * (see VREF_MATCH; `z` the fed-back depth, or NULL for GL_2D), or -1. */
+static inline int vref_index_of(const vref_set *s, const GLfloat *fed, const GLfloat *z)
 {
     int i, best = -1;
     double best_d = VREF_MATCH;
     for (i = 0; i < s->n; i++) {
         double d = fabs(fed[0] - s->v[i].window[0]) + fabs(fed[1] - s->v[i].window[1]);
+        if (z != NULL && fabs(*z - s->v[i].window[2]) > VREF_MATCH_Z)
+            continue;
         if (d <= best_d) {
             best_d = d;
             best = i;
@@ -164,7 +142,7 @@ static inline void vref_note(void *user, GLenum mode, GLenum token, const GLfloa
     int best, face = 0;
     if (type == GL_2D || type == GL_3D)
         return; /* no color to check */
-    best = vref_index_of(s, fed);
+    best = vref_index_of(s, fed, fed + 2);
     if (best < 0) {
         /* a vertex made by clipping (its coordinates are compared with the
          * harness's tolerance for such vertices) */
@@ -221,9 +199,6 @@ static inline void vref_print_counts(const vref_set *s)
 }
 
 #define VREF_MAX_PRIMITIVE 64
-#ifndef VREF_VISIBLE_FIRST_SEGMENT
-#define VREF_VISIBLE_FIRST_SEGMENT 1
-#endif
 
 /* One glBegin(mode)/glEnd of `count` vertices shaped by ffl_shape, each with
  * its own random color and normal, marked for the feedback printer. */
@@ -232,21 +207,9 @@ static inline void vref_draw_shape(vref_set *s, ffl_fb *fb, ffl_rng *r, GLenum m
 {
     float p[VREF_MAX_PRIMITIVE][3];
     int k;
-    int tries = 0;
     if (count > VREF_MAX_PRIMITIVE)
         count = VREF_MAX_PRIMITIVE;
     ffl_shape(r, mode, count, cx, cy, size, depth, p);
-    /* VREF_VISIBLE_FIRST_SEGMENT: the first segment of a strip or loop is
-     * kept inside the clip volume (a new shape, nearer the center, until it
-     * is): fflight drops the stipple reset of a strip whose first segment is
-     * clipped away (a reported bug, shown by clip_line_strip_reset.c), and
-     * that program alone should fail for it. Remove once fixed. */
-    while (VREF_VISIBLE_FIRST_SEGMENT && (mode == GL_LINE_STRIP || mode == GL_LINE_LOOP) &&
-           count >= 2 && !(vref_inside(s, p[0], 0.01) && vref_inside(s, p[1], 0.01)) &&
-           tries++ < 100) {
-        double shrink = 1.0 - (double)tries / 100.0;
-        ffl_shape(r, mode, count, cx * shrink, cy * shrink, size * shrink, depth * shrink, p);
-    }
     ffl_fb_begin(fb, mode);
     for (k = 0; k < count; k++) {
         vref_random_attributes(s, r);
