@@ -19,7 +19,8 @@ impl Default for CurrentAttribs {
     fn default() -> CurrentAttribs {
         CurrentAttribs {
             color: Vec4::ONE,
-            secondary_color: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            // The secondary color has no alpha of its own: GL keeps it at 0 (GL 1.4 §2.7).
+            secondary_color: Vec4::ZERO,
             normal: Vec3::Z,
             tex_coord: Vec4::W,
             edge_flag: true,
