@@ -170,11 +170,16 @@ impl Context {
     }
 
     /// Facing from the sign of the window-space area (§2.14.1): counterclockwise is positive.
+    /// A polygon of zero area is front-facing under neither winding: back-facing.
     fn is_front_facing(&self, window: [Vec4; 3]) -> bool {
         let e = window[0] - window[2];
         let f = window[1] - window[2];
-        let counterclockwise = e.x * f.y - e.y * f.x > 0.0;
-        counterclockwise == (self.raster.front_face == GL_CCW)
+        let twice_area = e.x * f.y - e.y * f.x;
+        if self.raster.front_face == GL_CCW {
+            twice_area > 0.0
+        } else {
+            twice_area < 0.0
+        }
     }
 
     fn culls(&self, front: bool) -> bool {
