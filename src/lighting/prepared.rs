@@ -72,7 +72,7 @@ impl PreparedLight {
             Some(cos_cutoff) => {
                 let cos_angle = (-to_light).dot(self.spot_direction);
                 if cos_angle >= cos_cutoff {
-                    cos_angle.max(0.0).powf(self.spot_exponent)
+                    super::power(cos_angle.max(0.0), self.spot_exponent)
                 } else {
                     0.0
                 }
