@@ -61,7 +61,12 @@ impl ElementIndices<'_> {
     /// Calls `f` with each index, in order.
     pub fn for_each(&self, mut f: impl FnMut(usize)) {
         match *self {
-            ElementIndices::Sequential { first, count } => (first..).take(count).for_each(f),
+            ElementIndices::Sequential { first, count } => {
+                // Inclusive, so that an index of usize::MAX ends the range instead of
+                // overflowing it.
+                let last = first.saturating_add(count.saturating_sub(1));
+                (first..=last).take(count).for_each(f)
+            }
             ElementIndices::Listed { index_type, bytes } => match index_type {
                 GL_UNSIGNED_BYTE => bytes.iter().for_each(|&i| f(i as usize)),
                 GL_UNSIGNED_SHORT => bytes
@@ -388,6 +393,7 @@ impl Context {
     /// material tracks: it follows the current color.
     ///
     /// GL_INVALID_OPERATION when `sources` misses bytes of an enabled array;
+    /// GL_INVALID_VALUE when sequential indices would run past `usize::MAX`;
     /// GL_OUT_OF_MEMORY when the vertices do not fit in memory.
     pub fn draw_arrays_from(
         &mut self,
@@ -397,8 +403,15 @@ impl Context {
     ) -> GlResult {
         self.outside_begin_end()?;
         check_mode(mode)?;
-        if let ElementIndices::Listed { index_type, .. } = *indices {
-            index_size(index_type).ok_or(GlError::InvalidEnum)?;
+        match *indices {
+            ElementIndices::Listed { index_type, .. } => {
+                index_size(index_type).ok_or(GlError::InvalidEnum)?;
+            }
+            ElementIndices::Sequential { first, count } => {
+                if count > 0 && first.checked_add(count - 1).is_none() {
+                    return Err(GlError::InvalidValue);
+                }
+            }
         }
         let arrays = self.arrays;
         if !arrays.get(ArrayKind::Vertex).enabled {
