@@ -42,8 +42,11 @@ pub struct VertexInput {
     pub secondary_color: Vec4,
 }
 
+/// Clamps each component to [0, 1] (§2.14.8). A NaN component, whose result GL leaves
+/// unspecified (§2.1.1), becomes 0 on every target: glam's `clamp` gives 0 with SSE2 and in its
+/// scalar code but keeps NaN with NEON, whose max propagates it.
 fn clamp01(c: Vec4) -> Vec4 {
-    c.clamp(Vec4::ZERO, Vec4::ONE)
+    Vec4::select(c.cmpgt(Vec4::ZERO), c.min(Vec4::ONE), Vec4::ZERO)
 }
 
 /// The per-face sums of light colors, weighted by the light-dependent factors.
