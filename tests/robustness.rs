@@ -1,0 +1,2349 @@
+//! Randomized robustness: GL's rule for bad input (§2.5: a command that raises an error has no
+//! other effect) and fflight's own (never a crash, nothing lost), checked over long random
+//! sequences of every command with valid and invalid arguments.
+//!
+//! - Through `fflight::Context` directly, so a panic fails the test (the C layer would catch
+//!   it): a call whose arguments GL must reject returns `Err` (`Op::must_fail`, a conservative
+//!   oracle); after every call that returns `Err`, everything the queries report (every glGet
+//!   pname, every light and material parameter, clip planes, array pointers, the whole of each
+//!   matrix stack, capture and the feedback buffer, with the primitive in progress ended on a
+//!   copy) is what it was before; the error flag keeps the first error until read. Fed-back,
+//!   captured and bulk-lit colors stay in [0, 1] whatever the inputs (NaN and infinities
+//!   included), and feedback streams parse.
+//! - Through the C entry points: NULL pointers and wrong enums, inside and outside
+//!   glBegin/glEnd, set an error and change nothing.
+//!
+//! Each sequence has a fixed seed (printed on failure with the call that failed and the calls
+//! before it), so a failure reproduces with `sequence(seed)`.
+
+mod common;
+
+use std::ffi::c_void;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::ptr::{null, null_mut};
+
+use common::*;
+use fflight::commands::arrays::{ArraySources, ElementIndices};
+use fflight::commands::query::StateValue;
+use fflight::current::with_current;
+use fflight::lighting::{FaceColors, LitVertex};
+use fflight::pipeline::vertex::ProcessedVertex;
+use fflight::state::arrays::ArrayKind;
+use fflight::{Context, GlError, GlResult};
+use glam::{Vec3, Vec4};
+
+// ---- a small deterministic generator ----
+
+/// splitmix64: the same seed gives the same sequence everywhere.
+struct Rng(u64);
+
+impl Rng {
+    fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    fn below(&mut self, n: usize) -> usize {
+        (self.next_u64() % n as u64) as usize
+    }
+
+    fn one_in(&mut self, n: usize) -> bool {
+        self.below(n) == 0
+    }
+
+    fn coin(&mut self) -> bool {
+        self.next_u64() & 1 == 1
+    }
+
+    fn pick<T: Copy>(&mut self, items: &[T]) -> T {
+        items[self.below(items.len())]
+    }
+
+    fn range(&mut self, lo: i64, hi: i64) -> i64 {
+        lo + (self.next_u64() % (hi - lo + 1) as u64) as i64
+    }
+
+    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        let unit = (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+        lo + (hi - lo) * unit
+    }
+
+    /// An enum argument: half the time one of `valid`, else a neighbor of one or any value.
+    fn enumeration(&mut self, valid: &[GLenum]) -> GLenum {
+        match self.below(4) {
+            0 | 1 => self.pick(valid),
+            2 => {
+                let offset = self.pick(&[-3, -2, -1, 1, 2, 3]);
+                self.pick(valid).wrapping_add_signed(offset)
+            }
+            _ => self.any_u32(),
+        }
+    }
+
+    /// An enum argument the command must reject.
+    fn invalid_enum(&mut self, valid: &[GLenum]) -> GLenum {
+        loop {
+            let value = self.enumeration(valid);
+            if !valid.contains(&value) {
+                return value;
+            }
+        }
+    }
+
+    fn any_u32(&mut self) -> u32 {
+        match self.below(4) {
+            0 => self.pick(&[0, 1, 0xFFFF, 0x7FFF_FFFF, 0x8000_0000, u32::MAX]),
+            1 => self.below(0x10000) as u32,
+            _ => self.next_u64() as u32,
+        }
+    }
+
+    /// A float argument: mostly ordinary values, also GL's boundaries, huge and tiny ones,
+    /// and NaN and infinities unless `finite`.
+    fn float(&mut self, finite: bool) -> f32 {
+        match self.below(20) {
+            0..=7 => self.uniform(-2.0, 2.0) as f32,
+            8 | 9 => self.uniform(0.0, 1.0) as f32,
+            10 => self.pick(&[
+                0.0, -0.0, 1.0, -1.0, 0.5, 90.0, 90.0001, 128.0, 128.0001, 179.9, 180.0,
+            ]),
+            11 => self.uniform(-200.0, 200.0) as f32,
+            12 => self.range(-3, 200) as f32,
+            13 => self.pick(&[1e20, -1e20, 1e38, -1e38, f32::MAX, -f32::MAX]),
+            14 => self.pick(&[1e-30, -1e-30, f32::MIN_POSITIVE, 1e-45, -1e-45]),
+            15..=17 if !finite => self.pick(&[f32::NAN, f32::INFINITY, f32::NEG_INFINITY]),
+            _ => self.uniform(-10.0, 10.0) as f32,
+        }
+    }
+
+    fn double(&mut self, finite: bool) -> f64 {
+        match self.below(12) {
+            0 => self.pick(&[1e300, -1e300, f64::MIN_POSITIVE, 5e-324]),
+            _ => self.float(finite) as f64,
+        }
+    }
+
+    /// A scalar parameter: a float, or sometimes an enum value as a float (light model).
+    fn param(&mut self, finite: bool) -> f32 {
+        if self.one_in(8) {
+            let value = self.enumeration(&[GL_SINGLE_COLOR, GL_SEPARATE_SPECULAR_COLOR]);
+            value as f32 + self.pick(&[0.0, 0.0, 0.5])
+        } else {
+            self.float(finite)
+        }
+    }
+
+    /// Vector parameters, usually as many as the longest pname takes (4), sometimes fewer.
+    fn params(&mut self, finite: bool) -> Vec<f32> {
+        let len = if self.one_in(8) { self.below(4) } else { 4 };
+        (0..len).map(|_| self.param(finite)).collect()
+    }
+
+    fn int(&mut self) -> i32 {
+        match self.below(5) {
+            0 => self.pick(&[
+                i32::MIN,
+                i32::MAX,
+                0,
+                -1,
+                1,
+                GL_SEPARATE_SPECULAR_COLOR as i32,
+            ]),
+            1 | 2 => self.range(-5, 200) as i32,
+            _ => self.next_u64() as i32,
+        }
+    }
+
+    fn ints(&mut self) -> Vec<i32> {
+        let len = if self.one_in(8) { self.below(4) } else { 4 };
+        (0..len).map(|_| self.int()).collect()
+    }
+
+    fn vec4(&mut self, finite: bool) -> Vec4 {
+        Vec4::new(
+            self.float(finite),
+            self.float(finite),
+            self.float(finite),
+            self.float(finite),
+        )
+    }
+
+    fn vec3(&mut self, finite: bool) -> Vec3 {
+        Vec3::new(self.float(finite), self.float(finite), self.float(finite))
+    }
+
+    /// A vertex position: mostly in and around the view volume with w = 1.
+    fn position(&mut self, finite: bool) -> Vec4 {
+        if self.one_in(6) {
+            return self.vec4(finite);
+        }
+        let mut c = || self.uniform(-3.0, 3.0) as f32;
+        let (x, y, z) = (c(), c(), c());
+        let w = if self.one_in(8) {
+            self.pick(&[0.0, -1.0, 2.0, 1e-20])
+        } else {
+            1.0
+        };
+        Vec4::new(x, y, z, w)
+    }
+
+    /// A matrix: identity-like, affine, singular (zero or rank-one), or arbitrary values.
+    fn matrix(&mut self, finite: bool) -> [f32; 16] {
+        let mut m = [0.0; 16];
+        match self.below(6) {
+            0 => [0, 5, 10, 15].into_iter().for_each(|i| m[i] = 1.0),
+            1 => {
+                [0, 5, 10, 15].into_iter().for_each(|i| m[i] = 1.0);
+                for v in &mut m[..15] {
+                    *v += self.uniform(-0.5, 0.5) as f32;
+                }
+            }
+            // A zero matrix, or one whose columns are all multiples of one column.
+            2 => {
+                if self.coin() {
+                    let column: [f32; 4] = std::array::from_fn(|_| self.float(finite));
+                    for (i, v) in m.iter_mut().enumerate() {
+                        *v = column[i % 4] * (i / 4) as f32;
+                    }
+                }
+            }
+            _ => m.iter_mut().for_each(|v| *v = self.float(finite)),
+        }
+        m
+    }
+
+    fn address(&mut self) -> usize {
+        match self.below(6) {
+            0 => 0,
+            1 => usize::MAX - self.below(64),
+            2 => self.next_u64() as usize,
+            _ => 0x1000 + 4 * self.below(1000),
+        }
+    }
+
+    fn stride(&mut self) -> i32 {
+        match self.below(8) {
+            0 => self.pick(&[-1, -4, i32::MIN, i32::MAX]),
+            1..=4 => 0,
+            _ => self.range(1, 64) as i32,
+        }
+    }
+
+    /// A count: mostly small, sometimes negative or huge.
+    fn count(&mut self) -> i32 {
+        match self.below(10) {
+            0 => self.pick(&[-1, -100, i32::MIN, i32::MAX, 1 << 20]),
+            1..=5 => self.range(0, 12) as i32,
+            _ => self.range(0, 60) as i32,
+        }
+    }
+}
+
+// ---- the valid arguments of each command ----
+
+const LIGHTS: [GLenum; 8] = [
+    GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7,
+];
+const LIGHT_PNAMES: [GLenum; 10] = [
+    GL_AMBIENT,
+    GL_DIFFUSE,
+    GL_SPECULAR,
+    GL_POSITION,
+    GL_SPOT_DIRECTION,
+    GL_SPOT_EXPONENT,
+    GL_SPOT_CUTOFF,
+    GL_CONSTANT_ATTENUATION,
+    GL_LINEAR_ATTENUATION,
+    GL_QUADRATIC_ATTENUATION,
+];
+const FACES: [GLenum; 3] = [GL_FRONT, GL_BACK, GL_FRONT_AND_BACK];
+const MATERIAL_PNAMES: [GLenum; 7] = [
+    GL_AMBIENT,
+    GL_DIFFUSE,
+    GL_SPECULAR,
+    GL_EMISSION,
+    GL_SHININESS,
+    GL_AMBIENT_AND_DIFFUSE,
+    GL_COLOR_INDEXES,
+];
+/// What glGetMaterial accepts.
+const MATERIAL_QUERIES: [GLenum; 6] = [
+    GL_AMBIENT,
+    GL_DIFFUSE,
+    GL_SPECULAR,
+    GL_EMISSION,
+    GL_SHININESS,
+    GL_COLOR_INDEXES,
+];
+const LIGHT_MODEL_PNAMES: [GLenum; 4] = [
+    GL_LIGHT_MODEL_AMBIENT,
+    GL_LIGHT_MODEL_LOCAL_VIEWER,
+    GL_LIGHT_MODEL_TWO_SIDE,
+    GL_LIGHT_MODEL_COLOR_CONTROL,
+];
+const COLOR_MATERIAL_MODES: [GLenum; 5] = [
+    GL_AMBIENT,
+    GL_DIFFUSE,
+    GL_SPECULAR,
+    GL_EMISSION,
+    GL_AMBIENT_AND_DIFFUSE,
+];
+const CLIENT_ARRAYS: [GLenum; 6] = [
+    GL_VERTEX_ARRAY,
+    GL_NORMAL_ARRAY,
+    GL_COLOR_ARRAY,
+    GL_INDEX_ARRAY,
+    GL_TEXTURE_COORD_ARRAY,
+    GL_EDGE_FLAG_ARRAY,
+];
+/// Every capability glEnable accepts: lighting, clip planes, culling, the rasterization
+/// capabilities fflight stores (values of <GL/gl.h>), and the client arrays.
+const CAPS: [GLenum; 56] = [
+    GL_LIGHTING,
+    GL_LIGHT0,
+    GL_LIGHT1,
+    GL_LIGHT2,
+    GL_LIGHT3,
+    GL_LIGHT4,
+    GL_LIGHT5,
+    GL_LIGHT6,
+    GL_LIGHT7,
+    GL_NORMALIZE,
+    GL_RESCALE_NORMAL,
+    GL_COLOR_MATERIAL,
+    GL_CULL_FACE,
+    GL_CLIP_PLANE0,
+    GL_CLIP_PLANE1,
+    GL_CLIP_PLANE2,
+    GL_CLIP_PLANE3,
+    GL_CLIP_PLANE4,
+    GL_CLIP_PLANE5,
+    0x0BC0, // GL_ALPHA_TEST
+    0x0D80, // GL_AUTO_NORMAL
+    0x0BE2, // GL_BLEND
+    0x0BF2, // GL_COLOR_LOGIC_OP
+    0x8458, // GL_COLOR_SUM
+    0x0B71, // GL_DEPTH_TEST
+    0x0BD0, // GL_DITHER
+    0x0B60, // GL_FOG
+    0x0BF1, // GL_INDEX_LOGIC_OP
+    0x0B20, // GL_LINE_SMOOTH
+    0x0B24, // GL_LINE_STIPPLE
+    0x809D, // GL_MULTISAMPLE
+    0x0B10, // GL_POINT_SMOOTH
+    0x8037, // GL_POLYGON_OFFSET_FILL
+    0x2A02, // GL_POLYGON_OFFSET_LINE
+    0x2A01, // GL_POLYGON_OFFSET_POINT
+    0x0B41, // GL_POLYGON_SMOOTH
+    0x0B42, // GL_POLYGON_STIPPLE
+    0x0C11, // GL_SCISSOR_TEST
+    0x0B90, // GL_STENCIL_TEST
+    0x0DE0, // GL_TEXTURE_1D
+    0x0DE1, // GL_TEXTURE_2D
+    0x806F, // GL_TEXTURE_3D
+    0x8513, // GL_TEXTURE_CUBE_MAP
+    0x0C60, // GL_TEXTURE_GEN_S
+    0x0C61, // GL_TEXTURE_GEN_T
+    0x0C62, // GL_TEXTURE_GEN_R
+    0x0C63, // GL_TEXTURE_GEN_Q
+    GL_VERTEX_ARRAY,
+    GL_NORMAL_ARRAY,
+    GL_COLOR_ARRAY,
+    GL_INDEX_ARRAY,
+    GL_TEXTURE_COORD_ARRAY,
+    GL_EDGE_FLAG_ARRAY,
+    // Not capabilities: glEnable must reject these neighbors of real ones.
+    GL_COLOR_MATERIAL_FACE,
+    GL_LIGHT_MODEL_AMBIENT,
+    GL_MAX_LIGHTS,
+];
+/// How many of `CAPS` are capabilities.
+const VALID_CAPS: usize = 53;
+/// Every glGet pname fflight answers, besides the capabilities.
+const GET_PNAMES: [GLenum; 66] = [
+    GL_MAX_LIGHTS,
+    GL_MAX_CLIP_PLANES,
+    GL_MAX_VIEWPORT_DIMS,
+    GL_MAX_MODELVIEW_STACK_DEPTH,
+    GL_MAX_PROJECTION_STACK_DEPTH,
+    GL_MAX_TEXTURE_STACK_DEPTH,
+    GL_MAX_ELEMENTS_VERTICES,
+    GL_MAX_ELEMENTS_INDICES,
+    GL_CURRENT_COLOR,
+    GL_CURRENT_NORMAL,
+    GL_CURRENT_TEXTURE_COORDS,
+    GL_EDGE_FLAG,
+    GL_LIGHT_MODEL_AMBIENT,
+    GL_LIGHT_MODEL_LOCAL_VIEWER,
+    GL_LIGHT_MODEL_TWO_SIDE,
+    GL_LIGHT_MODEL_COLOR_CONTROL,
+    GL_COLOR_MATERIAL_FACE,
+    GL_COLOR_MATERIAL_PARAMETER,
+    GL_MATRIX_MODE,
+    GL_MODELVIEW_MATRIX,
+    GL_PROJECTION_MATRIX,
+    GL_TEXTURE_MATRIX,
+    GL_TRANSPOSE_MODELVIEW_MATRIX,
+    GL_TRANSPOSE_PROJECTION_MATRIX,
+    GL_TRANSPOSE_TEXTURE_MATRIX,
+    GL_MODELVIEW_STACK_DEPTH,
+    GL_PROJECTION_STACK_DEPTH,
+    GL_TEXTURE_STACK_DEPTH,
+    GL_VIEWPORT,
+    GL_DEPTH_RANGE,
+    GL_SHADE_MODEL,
+    GL_FRONT_FACE,
+    GL_CULL_FACE_MODE,
+    GL_POLYGON_MODE,
+    GL_POINT_SIZE,
+    GL_LINE_WIDTH,
+    GL_POINT_SIZE_RANGE,
+    GL_LINE_WIDTH_RANGE,
+    GL_COLOR_CLEAR_VALUE,
+    GL_DEPTH_CLEAR_VALUE,
+    GL_PERSPECTIVE_CORRECTION_HINT,
+    GL_POINT_SMOOTH_HINT,
+    GL_LINE_SMOOTH_HINT,
+    GL_POLYGON_SMOOTH_HINT,
+    GL_FOG_HINT,
+    GL_RENDER_MODE,
+    GL_FEEDBACK_BUFFER_SIZE,
+    GL_FEEDBACK_BUFFER_TYPE,
+    GL_VERTEX_ARRAY,
+    GL_NORMAL_ARRAY,
+    GL_COLOR_ARRAY,
+    GL_INDEX_ARRAY,
+    GL_TEXTURE_COORD_ARRAY,
+    GL_EDGE_FLAG_ARRAY,
+    GL_VERTEX_ARRAY_SIZE,
+    GL_VERTEX_ARRAY_TYPE,
+    GL_VERTEX_ARRAY_STRIDE,
+    GL_NORMAL_ARRAY_TYPE,
+    GL_NORMAL_ARRAY_STRIDE,
+    GL_COLOR_ARRAY_SIZE,
+    GL_COLOR_ARRAY_TYPE,
+    GL_COLOR_ARRAY_STRIDE,
+    GL_TEXTURE_COORD_ARRAY_SIZE,
+    GL_TEXTURE_COORD_ARRAY_TYPE,
+    GL_TEXTURE_COORD_ARRAY_STRIDE,
+    GL_EDGE_FLAG_ARRAY_STRIDE,
+];
+const MATRIX_MODES: [GLenum; 3] = [GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE];
+const PRIMITIVES: [GLenum; 10] = [
+    GL_POINTS,
+    GL_LINES,
+    GL_LINE_LOOP,
+    GL_LINE_STRIP,
+    GL_TRIANGLES,
+    GL_TRIANGLE_STRIP,
+    GL_TRIANGLE_FAN,
+    GL_QUADS,
+    GL_QUAD_STRIP,
+    GL_POLYGON,
+];
+const FEEDBACK_TYPES: [GLenum; 5] = [
+    GL_2D,
+    GL_3D,
+    GL_3D_COLOR,
+    GL_3D_COLOR_TEXTURE,
+    GL_4D_COLOR_TEXTURE,
+];
+const RENDER_MODES: [GLenum; 3] = [GL_RENDER, GL_FEEDBACK, GL_SELECT];
+const CLIP_PLANES: [GLenum; 6] = [
+    GL_CLIP_PLANE0,
+    GL_CLIP_PLANE1,
+    GL_CLIP_PLANE2,
+    GL_CLIP_PLANE3,
+    GL_CLIP_PLANE4,
+    GL_CLIP_PLANE5,
+];
+const SHADE_MODELS: [GLenum; 2] = [GL_FLAT, GL_SMOOTH];
+const WINDINGS: [GLenum; 2] = [GL_CW, GL_CCW];
+const POLYGON_MODES: [GLenum; 3] = [GL_POINT, GL_LINE, GL_FILL];
+const HINT_TARGETS: [GLenum; 5] = [
+    GL_PERSPECTIVE_CORRECTION_HINT,
+    GL_POINT_SMOOTH_HINT,
+    GL_LINE_SMOOTH_HINT,
+    GL_POLYGON_SMOOTH_HINT,
+    GL_FOG_HINT,
+];
+const HINT_MODES: [GLenum; 3] = [GL_DONT_CARE, GL_FASTEST, GL_NICEST];
+const COMPONENT_TYPES: [GLenum; 8] = [
+    GL_BYTE,
+    GL_UNSIGNED_BYTE,
+    GL_SHORT,
+    GL_UNSIGNED_SHORT,
+    GL_INT,
+    GL_UNSIGNED_INT,
+    GL_FLOAT,
+    GL_DOUBLE,
+];
+const INDEX_TYPES: [GLenum; 3] = [GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT];
+const INTERLEAVED_FORMATS: [GLenum; 14] = [
+    GL_V2F,
+    GL_V3F,
+    GL_C4UB_V2F,
+    GL_C4UB_V3F,
+    GL_C3F_V3F,
+    GL_N3F_V3F,
+    GL_C4F_N3F_V3F,
+    GL_T2F_V3F,
+    GL_T4F_V4F,
+    GL_T2F_C4UB_V3F,
+    GL_T2F_C3F_V3F,
+    GL_T2F_N3F_V3F,
+    GL_T2F_C4F_N3F_V3F,
+    GL_T4F_C4F_N3F_V4F,
+];
+const POINTER_PNAMES: [GLenum; 6] = [
+    GL_VERTEX_ARRAY_POINTER,
+    GL_NORMAL_ARRAY_POINTER,
+    GL_COLOR_ARRAY_POINTER,
+    GL_TEXTURE_COORD_ARRAY_POINTER,
+    GL_EDGE_FLAG_ARRAY_POINTER,
+    GL_FEEDBACK_BUFFER_POINTER,
+];
+const STRING_NAMES: [GLenum; 4] = [GL_VENDOR, GL_RENDERER, GL_VERSION, GL_EXTENSIONS];
+const ARRAY_KINDS: [ArrayKind; 5] = [
+    ArrayKind::Vertex,
+    ArrayKind::Normal,
+    ArrayKind::Color,
+    ArrayKind::TexCoord,
+    ArrayKind::EdgeFlag,
+];
+
+// ---- the commands ----
+
+/// Where the `ArraySources` of a Rust draw start: at the draw's lowest index, as the C layer
+/// builds them, at element 0, or past the lowest index (a caller's mistake).
+#[derive(Clone, Copy, Debug)]
+enum Base {
+    Lowest,
+    Zero,
+    Above(usize),
+}
+
+impl Base {
+    fn random(rng: &mut Rng) -> Base {
+        match rng.below(6) {
+            0 => Base::Zero,
+            1 => Base::Above(1 + rng.below(3)),
+            _ => Base::Lowest,
+        }
+    }
+
+    fn of(self, lowest: usize) -> usize {
+        match self {
+            Base::Lowest => lowest,
+            Base::Zero => 0,
+            Base::Above(k) => lowest.saturating_add(k),
+        }
+    }
+}
+
+/// One call of the Rust API, with its arguments (printed when a check fails).
+#[derive(Clone, Debug)]
+enum Op {
+    Light {
+        light: GLenum,
+        pname: GLenum,
+        params: Vec<f32>,
+    },
+    LightI {
+        light: GLenum,
+        pname: GLenum,
+        params: Vec<i32>,
+    },
+    LightScalar {
+        light: GLenum,
+        pname: GLenum,
+        param: f32,
+    },
+    Material {
+        face: GLenum,
+        pname: GLenum,
+        params: Vec<f32>,
+    },
+    MaterialI {
+        face: GLenum,
+        pname: GLenum,
+        params: Vec<i32>,
+    },
+    MaterialScalar {
+        face: GLenum,
+        pname: GLenum,
+        param: f32,
+    },
+    LightModel {
+        pname: GLenum,
+        params: Vec<f32>,
+    },
+    LightModelI {
+        pname: GLenum,
+        params: Vec<i32>,
+    },
+    LightModelScalar {
+        pname: GLenum,
+        param: f32,
+    },
+    ColorMaterial {
+        face: GLenum,
+        mode: GLenum,
+    },
+    Capability {
+        cap: GLenum,
+        enabled: bool,
+    },
+    Color(Vec4),
+    Normal(Vec3),
+    TexCoord(Vec4),
+    EdgeFlag(bool),
+    MatrixMode(GLenum),
+    LoadIdentity,
+    LoadMatrix([f32; 16]),
+    MultMatrix([f32; 16]),
+    LoadTransposeMatrix([f32; 16]),
+    MultTransposeMatrix([f32; 16]),
+    Translate([f64; 3]),
+    Scale([f64; 3]),
+    Rotate([f64; 4]),
+    Frustum([f64; 6]),
+    Ortho([f64; 6]),
+    PushMatrix,
+    PopMatrix,
+    Begin(GLenum),
+    Vertex(Vec4),
+    End,
+    Rect([f32; 4]),
+    FeedbackBuffer {
+        size: i32,
+        kind: GLenum,
+        address: usize,
+    },
+    RenderMode(GLenum),
+    PassThrough(f32),
+    Viewport([i32; 4]),
+    DepthRange([f64; 2]),
+    ClipPlane {
+        plane: GLenum,
+        equation: [f64; 4],
+    },
+    ShadeModel(GLenum),
+    FrontFace(GLenum),
+    CullFace(GLenum),
+    PolygonMode {
+        face: GLenum,
+        mode: GLenum,
+    },
+    PointSize(f32),
+    LineWidth(f32),
+    Hint {
+        target: GLenum,
+        mode: GLenum,
+    },
+    ClearColor(Vec4),
+    ClearDepth(f64),
+    Clear(u32),
+    Finish,
+    Pointer {
+        kind: ArrayKind,
+        size: i32,
+        component_type: GLenum,
+        stride: i32,
+        address: usize,
+    },
+    ClientState {
+        array: GLenum,
+        enabled: bool,
+    },
+    InterleavedArrays {
+        format: GLenum,
+        stride: i32,
+        address: usize,
+    },
+    /// check_array_element, then array_element_from.
+    ArrayElement {
+        index: i32,
+        base: Base,
+    },
+    /// check_draw_arrays, array_spans (as the C layer, when `spans`), draw_arrays_from.
+    DrawArrays {
+        mode: GLenum,
+        first: i32,
+        count: i32,
+        base: Base,
+        spans: bool,
+    },
+    /// check_draw_elements or check_draw_range_elements, then as DrawArrays.
+    DrawElements {
+        mode: GLenum,
+        count: i32,
+        index_type: GLenum,
+        indices: Vec<u8>,
+        range: Option<(u32, u32)>,
+        base: Base,
+        spans: bool,
+    },
+    /// draw_arrays_from alone, with indices no C call could make.
+    DrawFrom {
+        mode: GLenum,
+        first: usize,
+        count: usize,
+        base: Base,
+    },
+    LightVertices {
+        positions: Vec<Vec4>,
+        normals: Option<Vec<Vec3>>,
+        colors: Option<Vec<Vec4>>,
+        out: usize,
+    },
+    CaptureBegin,
+    CaptureEnd,
+    Get(GLenum),
+    GetLight {
+        light: GLenum,
+        pname: GLenum,
+        ints: bool,
+    },
+    GetMaterial {
+        face: GLenum,
+        pname: GLenum,
+        ints: bool,
+    },
+    GetClipPlane(GLenum),
+    IsEnabled(GLenum),
+    GetString(GLenum),
+    GetPointer(GLenum),
+    /// get_error: checked against the first error recorded since the last one.
+    GetError,
+}
+
+impl Op {
+    /// Whether the call only reads state (or the error flag, which snapshots leave out).
+    fn is_query(&self) -> bool {
+        matches!(
+            self,
+            Op::Get(_)
+                | Op::GetLight { .. }
+                | Op::GetMaterial { .. }
+                | Op::GetClipPlane(_)
+                | Op::IsEnabled(_)
+                | Op::GetString(_)
+                | Op::GetPointer(_)
+                | Op::GetError
+                | Op::Finish
+        )
+    }
+
+    /// Whether GL must reject the call (§2.5, §2.6.3, and each command's errors), judged
+    /// from its arguments alone, conservatively: `inside` says whether it comes between
+    /// glBegin and glEnd.
+    fn must_fail(&self, inside: bool) -> bool {
+        let valid = |value: GLenum, set: &[GLenum]| set.contains(&value);
+        let short = |params: usize, count: usize| params < count;
+        // The commands legal between glBegin and glEnd (§2.6.3), and the array pointer
+        // commands, which fflight accepts there as Mesa does.
+        let legal_inside = matches!(
+            self,
+            Op::Color(_)
+                | Op::Normal(_)
+                | Op::TexCoord(_)
+                | Op::EdgeFlag(_)
+                | Op::Vertex(_)
+                | Op::Material { .. }
+                | Op::MaterialI { .. }
+                | Op::MaterialScalar { .. }
+                | Op::ArrayElement { .. }
+                | Op::End
+                | Op::Pointer { .. }
+                | Op::ClientState { .. }
+                | Op::InterleavedArrays { .. }
+                | Op::GetError
+        );
+        if inside && !legal_inside {
+            return true;
+        }
+        match *self {
+            Op::Light {
+                light,
+                pname,
+                ref params,
+            } => {
+                !valid(light, &LIGHTS)
+                    || !valid(pname, &LIGHT_PNAMES)
+                    || short(params.len(), light_values(pname))
+            }
+            Op::LightI {
+                light,
+                pname,
+                ref params,
+            } => {
+                !valid(light, &LIGHTS)
+                    || !valid(pname, &LIGHT_PNAMES)
+                    || short(params.len(), light_values(pname))
+            }
+            Op::LightScalar { light, pname, .. } => {
+                !valid(light, &LIGHTS) || !valid(pname, &LIGHT_PNAMES) || light_values(pname) > 1
+            }
+            Op::Material {
+                face,
+                pname,
+                ref params,
+            } => {
+                !valid(face, &FACES)
+                    || !valid(pname, &MATERIAL_PNAMES)
+                    || short(params.len(), material_values(pname))
+            }
+            Op::MaterialI {
+                face,
+                pname,
+                ref params,
+            } => {
+                !valid(face, &FACES)
+                    || !valid(pname, &MATERIAL_PNAMES)
+                    || short(params.len(), material_values(pname))
+            }
+            Op::MaterialScalar { face, pname, .. } => !valid(face, &FACES) || pname != GL_SHININESS,
+            Op::LightModel { pname, ref params } => {
+                !valid(pname, &LIGHT_MODEL_PNAMES) || short(params.len(), light_model_values(pname))
+            }
+            Op::LightModelI { pname, ref params } => {
+                !valid(pname, &LIGHT_MODEL_PNAMES) || short(params.len(), light_model_values(pname))
+            }
+            Op::LightModelScalar { pname, .. } => {
+                !valid(pname, &LIGHT_MODEL_PNAMES) || pname == GL_LIGHT_MODEL_AMBIENT
+            }
+            Op::ColorMaterial { face, mode } => {
+                !valid(face, &FACES) || !valid(mode, &COLOR_MATERIAL_MODES)
+            }
+            Op::Capability { cap, .. } | Op::IsEnabled(cap) => !valid(cap, &CAPS[..VALID_CAPS]),
+            Op::MatrixMode(mode) => !valid(mode, &MATRIX_MODES),
+            Op::Begin(mode) => !valid(mode, &PRIMITIVES),
+            Op::End => !inside,
+            Op::FeedbackBuffer {
+                size,
+                kind,
+                address,
+            } => size < 0 || !valid(kind, &FEEDBACK_TYPES) || (address == 0 && size > 0),
+            Op::RenderMode(mode) => !valid(mode, &[GL_RENDER, GL_FEEDBACK]),
+            Op::Viewport([_, _, w, h]) => w < 0 || h < 0,
+            Op::ClipPlane { plane, .. } | Op::GetClipPlane(plane) => !valid(plane, &CLIP_PLANES),
+            Op::ShadeModel(mode) => !valid(mode, &SHADE_MODELS),
+            Op::FrontFace(mode) => !valid(mode, &WINDINGS),
+            Op::CullFace(mode) => !valid(mode, &FACES),
+            Op::PolygonMode { face, mode } => !valid(face, &FACES) || !valid(mode, &POLYGON_MODES),
+            Op::PointSize(size) | Op::LineWidth(size) => size.is_nan() || size <= 0.0,
+            Op::Hint { target, mode } => !valid(target, &HINT_TARGETS) || !valid(mode, &HINT_MODES),
+            Op::Clear(mask) => {
+                let buffers = GL_COLOR_BUFFER_BIT
+                    | GL_DEPTH_BUFFER_BIT
+                    | GL_STENCIL_BUFFER_BIT
+                    | GL_ACCUM_BUFFER_BIT;
+                mask & !buffers != 0
+            }
+            // Table 2.4; glNormalPointer has no size, glEdgeFlagPointer neither size nor type.
+            Op::Pointer {
+                kind,
+                size,
+                component_type,
+                stride,
+                ..
+            } => {
+                let coordinates = [GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
+                stride < 0
+                    || match kind {
+                        ArrayKind::Vertex => {
+                            !valid(component_type, &coordinates) || !(2..=4).contains(&size)
+                        }
+                        ArrayKind::TexCoord => {
+                            !valid(component_type, &coordinates) || !(1..=4).contains(&size)
+                        }
+                        ArrayKind::Normal => !valid(
+                            component_type,
+                            &[GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE],
+                        ),
+                        ArrayKind::Color => {
+                            !valid(component_type, &COMPONENT_TYPES) || !(3..=4).contains(&size)
+                        }
+                        ArrayKind::EdgeFlag => false,
+                    }
+            }
+            Op::ClientState { array, .. } => !valid(array, &CLIENT_ARRAYS),
+            Op::InterleavedArrays { format, stride, .. } => {
+                stride < 0 || !valid(format, &INTERLEAVED_FORMATS)
+            }
+            Op::ArrayElement { index, .. } => index < 0,
+            Op::DrawArrays {
+                mode, first, count, ..
+            } => !valid(mode, &PRIMITIVES) || first < 0 || count < 0,
+            Op::DrawElements {
+                mode,
+                count,
+                index_type,
+                range,
+                ..
+            } => {
+                !valid(mode, &PRIMITIVES)
+                    || count < 0
+                    || !valid(index_type, &INDEX_TYPES)
+                    || range.is_some_and(|(start, end)| end < start)
+            }
+            Op::DrawFrom { mode, .. } => !valid(mode, &PRIMITIVES),
+            Op::LightVertices {
+                ref positions,
+                ref normals,
+                ref colors,
+                out,
+            } => {
+                let n = positions.len();
+                normals.as_ref().is_some_and(|v| v.len() < n)
+                    || colors.as_ref().is_some_and(|v| v.len() < n)
+                    || out < n
+            }
+            Op::Get(pname) => !valid(pname, &GET_PNAMES) && !valid(pname, &CAPS[..VALID_CAPS]),
+            Op::GetLight { light, pname, .. } => {
+                !valid(light, &LIGHTS) || !valid(pname, &LIGHT_PNAMES)
+            }
+            Op::GetMaterial { face, pname, .. } => {
+                !valid(face, &[GL_FRONT, GL_BACK]) || !valid(pname, &MATERIAL_QUERIES)
+            }
+            Op::GetString(name) => !valid(name, &STRING_NAMES),
+            Op::GetPointer(pname) => !valid(pname, &POINTER_PNAMES),
+            _ => false,
+        }
+    }
+}
+
+/// How many values a glLight pname takes (table 2.10).
+fn light_values(pname: GLenum) -> usize {
+    match pname {
+        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => 4,
+        GL_SPOT_DIRECTION => 3,
+        _ => 1,
+    }
+}
+
+/// How many values a glMaterial pname takes (table 2.11).
+fn material_values(pname: GLenum) -> usize {
+    match pname {
+        GL_SHININESS => 1,
+        GL_COLOR_INDEXES => 3,
+        _ => 4,
+    }
+}
+
+/// How many values a glLightModel pname takes.
+fn light_model_values(pname: GLenum) -> usize {
+    match pname {
+        GL_LIGHT_MODEL_AMBIENT => 4,
+        _ => 1,
+    }
+}
+
+/// The bytes a sequence's vertex arrays read, one buffer per array.
+struct ArrayBytes([Vec<u8>; 5]);
+
+impl ArrayBytes {
+    /// Random contents; with `finite`, every float or double read at any offset is finite.
+    fn random(rng: &mut Rng, finite: bool) -> ArrayBytes {
+        ArrayBytes(std::array::from_fn(|_| {
+            let len = match rng.below(4) {
+                0 => rng.below(16),
+                1 => rng.below(512),
+                _ => rng.below(4096),
+            };
+            let mut bytes: Vec<u8> = Vec::with_capacity(len + 4);
+            while bytes.len() < len {
+                if finite {
+                    bytes.extend((rng.uniform(-2.0, 2.0) as f32).to_ne_bytes());
+                } else {
+                    bytes.extend(rng.next_u64().to_ne_bytes());
+                }
+            }
+            bytes.truncate(len);
+            if finite {
+                // No byte can then be the exponent byte of an infinity or a NaN.
+                bytes
+                    .iter_mut()
+                    .filter(|b| **b & 0x7F == 0x7F)
+                    .for_each(|b| *b ^= 1);
+            }
+            bytes
+        }))
+    }
+
+    fn sources(&self, base: usize) -> ArraySources<'_> {
+        ARRAY_KINDS
+            .iter()
+            .zip(&self.0)
+            .fold(ArraySources::new(base), |sources, (&kind, bytes)| {
+                sources.with(kind, bytes)
+            })
+    }
+}
+
+/// Any command, arguments half valid, half not.
+fn any_op(rng: &mut Rng, finite: bool) -> Op {
+    let f = finite;
+    match rng.below(80) {
+        0..=2 => Op::Light {
+            light: rng.enumeration(&LIGHTS),
+            pname: rng.enumeration(&LIGHT_PNAMES),
+            params: rng.params(f),
+        },
+        3 => Op::LightI {
+            light: rng.enumeration(&LIGHTS),
+            pname: rng.enumeration(&LIGHT_PNAMES),
+            params: rng.ints(),
+        },
+        4 => Op::LightScalar {
+            light: rng.enumeration(&LIGHTS),
+            pname: rng.enumeration(&LIGHT_PNAMES),
+            param: rng.param(f),
+        },
+        5 | 6 => Op::Material {
+            face: rng.enumeration(&FACES),
+            pname: rng.enumeration(&MATERIAL_PNAMES),
+            params: rng.params(f),
+        },
+        7 => Op::MaterialI {
+            face: rng.enumeration(&FACES),
+            pname: rng.enumeration(&MATERIAL_PNAMES),
+            params: rng.ints(),
+        },
+        8 => Op::MaterialScalar {
+            face: rng.enumeration(&FACES),
+            pname: rng.enumeration(&MATERIAL_PNAMES),
+            param: rng.param(f),
+        },
+        9 => Op::LightModel {
+            pname: rng.enumeration(&LIGHT_MODEL_PNAMES),
+            params: rng.params(f),
+        },
+        10 => Op::LightModelI {
+            pname: rng.enumeration(&LIGHT_MODEL_PNAMES),
+            params: rng.ints(),
+        },
+        11 => Op::LightModelScalar {
+            pname: rng.enumeration(&LIGHT_MODEL_PNAMES),
+            param: rng.param(f),
+        },
+        12 => Op::ColorMaterial {
+            face: rng.enumeration(&FACES),
+            mode: rng.enumeration(&COLOR_MATERIAL_MODES),
+        },
+        13..=15 => Op::Capability {
+            cap: rng.enumeration(&CAPS),
+            enabled: !rng.one_in(3),
+        },
+        16 => Op::Color(rng.vec4(f)),
+        17 => Op::Normal(rng.vec3(f)),
+        18 => Op::TexCoord(rng.vec4(f)),
+        19 => Op::EdgeFlag(rng.coin()),
+        20 => Op::MatrixMode(rng.enumeration(&MATRIX_MODES)),
+        21 => Op::LoadIdentity,
+        22 => Op::LoadMatrix(rng.matrix(f)),
+        23 => Op::MultMatrix(rng.matrix(f)),
+        24 => Op::LoadTransposeMatrix(rng.matrix(f)),
+        25 => Op::MultTransposeMatrix(rng.matrix(f)),
+        26 => Op::Translate(std::array::from_fn(|_| rng.double(f))),
+        27 => Op::Scale(std::array::from_fn(|_| rng.double(f))),
+        28 => Op::Rotate(std::array::from_fn(|_| rng.double(f))),
+        29 => Op::Frustum(std::array::from_fn(|_| rng.double(f))),
+        30 => Op::Ortho(std::array::from_fn(|_| rng.double(f))),
+        31 => Op::PushMatrix,
+        32 => Op::PopMatrix,
+        33..=37 => Op::Begin(rng.enumeration(&PRIMITIVES)),
+        38 => Op::End,
+        39 => Op::Rect(std::array::from_fn(|_| rng.float(f))),
+        40 => Op::FeedbackBuffer {
+            size: match rng.below(6) {
+                0 => rng.pick(&[-1, i32::MIN, i32::MAX, 1 << 20]),
+                1 => rng.below(16) as i32,
+                _ => rng.below(3000) as i32,
+            },
+            kind: rng.enumeration(&FEEDBACK_TYPES),
+            address: if rng.one_in(6) { 0 } else { 0x1000 },
+        },
+        41 | 42 => Op::RenderMode(rng.enumeration(&RENDER_MODES)),
+        43 => Op::PassThrough(rng.float(f)),
+        44 => Op::Viewport(std::array::from_fn(|_| match rng.below(4) {
+            0 => rng.int(),
+            _ => rng.range(-10, 300) as i32,
+        })),
+        45 => Op::DepthRange([rng.double(f), rng.double(f)]),
+        46 => Op::ClipPlane {
+            plane: rng.enumeration(&CLIP_PLANES),
+            equation: std::array::from_fn(|_| rng.double(f)),
+        },
+        47 => Op::ShadeModel(rng.enumeration(&SHADE_MODELS)),
+        48 => Op::FrontFace(rng.enumeration(&WINDINGS)),
+        49 => Op::CullFace(rng.enumeration(&FACES)),
+        50 => Op::PolygonMode {
+            face: rng.enumeration(&FACES),
+            mode: rng.enumeration(&POLYGON_MODES),
+        },
+        51 => Op::PointSize(rng.float(f)),
+        52 => Op::LineWidth(rng.float(f)),
+        53 => Op::Hint {
+            target: rng.enumeration(&HINT_TARGETS),
+            mode: rng.enumeration(&HINT_MODES),
+        },
+        54 => Op::ClearColor(rng.vec4(f)),
+        55 => Op::ClearDepth(rng.double(f)),
+        56 => Op::Clear(if rng.coin() {
+            rng.pick(&[
+                GL_COLOR_BUFFER_BIT,
+                GL_DEPTH_BUFFER_BIT,
+                GL_STENCIL_BUFFER_BIT,
+            ])
+        } else {
+            rng.any_u32()
+        }),
+        57 => Op::Finish,
+        58 | 59 => Op::Pointer {
+            kind: rng.pick(&ARRAY_KINDS),
+            size: rng.range(-1, 5) as i32,
+            component_type: rng.enumeration(&COMPONENT_TYPES),
+            stride: rng.stride(),
+            address: rng.address(),
+        },
+        60 => Op::ClientState {
+            array: rng.enumeration(&CLIENT_ARRAYS),
+            enabled: !rng.one_in(3),
+        },
+        61 => Op::InterleavedArrays {
+            format: rng.enumeration(&INTERLEAVED_FORMATS),
+            stride: rng.stride(),
+            address: rng.address(),
+        },
+        62..=64 => Op::DrawArrays {
+            mode: rng.enumeration(&PRIMITIVES),
+            first: if rng.one_in(8) {
+                rng.int()
+            } else {
+                rng.below(8) as i32
+            },
+            count: rng.count(),
+            base: Base::random(rng),
+            spans: rng.coin(),
+        },
+        65..=67 => draw_elements(rng),
+        68 => Op::DrawFrom {
+            mode: rng.enumeration(&PRIMITIVES),
+            first: match rng.below(3) {
+                0 => usize::MAX - rng.below(4),
+                1 => rng.next_u64() as usize,
+                _ => rng.below(8),
+            },
+            count: if rng.one_in(4) {
+                usize::MAX - rng.below(4)
+            } else {
+                rng.below(8)
+            },
+            base: Base::random(rng),
+        },
+        69 => light_vertices(rng, f),
+        70 => Op::CaptureBegin,
+        71 => Op::CaptureEnd,
+        72 => {
+            let pnames: &[GLenum] = if rng.coin() { &GET_PNAMES } else { &CAPS };
+            Op::Get(rng.enumeration(pnames))
+        }
+        73 => Op::GetLight {
+            light: rng.enumeration(&LIGHTS),
+            pname: rng.enumeration(&LIGHT_PNAMES),
+            ints: rng.coin(),
+        },
+        74 => Op::GetMaterial {
+            face: rng.enumeration(&FACES),
+            pname: rng.enumeration(&MATERIAL_PNAMES),
+            ints: rng.coin(),
+        },
+        75 => match rng.below(4) {
+            0 => Op::GetClipPlane(rng.enumeration(&CLIP_PLANES)),
+            1 => Op::IsEnabled(rng.enumeration(&CAPS)),
+            2 => Op::GetString(rng.enumeration(&STRING_NAMES)),
+            _ => Op::GetPointer(rng.enumeration(&POINTER_PNAMES)),
+        },
+        _ => Op::GetError,
+    }
+}
+
+fn draw_elements(rng: &mut Rng) -> Op {
+    let index_type = rng.enumeration(&INDEX_TYPES);
+    let count = rng.count();
+    let values = count.clamp(0, 80) as usize + rng.below(2);
+    let mut indices = Vec::new();
+    for _ in 0..values {
+        let index: u32 = if rng.one_in(16) {
+            rng.pick(&[255, 65535, u32::MAX])
+        } else {
+            rng.below(24) as u32
+        };
+        match index_type {
+            GL_UNSIGNED_BYTE => indices.push(index as u8),
+            GL_UNSIGNED_SHORT => indices.extend((index as u16).to_ne_bytes()),
+            _ => indices.extend(index.to_ne_bytes()),
+        }
+    }
+    // A Rust caller may hand over fewer bytes than count indices, or a partial index.
+    if rng.one_in(6) {
+        indices.truncate(rng.below(indices.len() + 1));
+    }
+    Op::DrawElements {
+        mode: rng.enumeration(&PRIMITIVES),
+        count,
+        index_type,
+        indices,
+        range: rng.coin().then(|| (rng.any_u32() % 32, rng.any_u32() % 64)),
+        base: Base::random(rng),
+        spans: rng.coin(),
+    }
+}
+
+fn light_vertices(rng: &mut Rng, finite: bool) -> Op {
+    let count = rng.below(12);
+    let len = |rng: &mut Rng| {
+        if rng.one_in(6) {
+            rng.below(count + 2)
+        } else {
+            count
+        }
+    };
+    let positions = (0..count).map(|_| rng.position(finite)).collect();
+    let normals = rng.coin().then(|| {
+        let n = len(rng);
+        (0..n).map(|_| rng.vec3(finite)).collect()
+    });
+    let colors = rng.coin().then(|| {
+        let n = len(rng);
+        (0..n).map(|_| rng.vec4(finite)).collect()
+    });
+    let out = len(rng);
+    Op::LightVertices {
+        positions,
+        normals,
+        colors,
+        out,
+    }
+}
+
+/// The next command: between glBegin and glEnd mostly vertices and what may come between
+/// them, sometimes anything (GL_INVALID_OPERATION for most).
+fn next_op(rng: &mut Rng, inside_begin_end: bool, finite: bool) -> Op {
+    if !inside_begin_end {
+        return any_op(rng, finite);
+    }
+    match rng.below(100) {
+        0..=39 => Op::Vertex(rng.position(finite)),
+        40..=49 => Op::Color(rng.vec4(finite)),
+        50..=54 => Op::Normal(rng.vec3(finite)),
+        55..=57 => Op::TexCoord(rng.vec4(finite)),
+        58 | 59 => Op::EdgeFlag(rng.coin()),
+        60..=63 => Op::Material {
+            face: rng.enumeration(&FACES),
+            pname: rng.enumeration(&MATERIAL_PNAMES),
+            params: rng.params(finite),
+        },
+        64..=67 => Op::ArrayElement {
+            index: if rng.one_in(8) {
+                rng.int()
+            } else {
+                rng.below(16) as i32
+            },
+            base: Base::random(rng),
+        },
+        68..=75 => Op::End,
+        _ => any_op(rng, finite),
+    }
+}
+
+// ---- running a command ----
+
+/// The first problem found: a message for the failure report.
+type Check = Result<(), String>;
+
+fn unit<T>(result: GlResult<T>) -> GlResult {
+    result.map(|_| ())
+}
+
+/// A color each of whose components is in [0, 1] (NaN is not).
+fn clamped(color: Vec4) -> bool {
+    color.to_array().iter().all(|c| (0.0..=1.0).contains(c))
+}
+
+/// Runs `op`. Invariants of a successful call (feedback streams, lit colors) are checked here;
+/// the unchanged state of a failed one by the caller.
+fn apply(ctx: &mut Context, op: &Op, arrays: &ArrayBytes) -> (GlResult, Check) {
+    let mut check = Ok(());
+    let result = match op {
+        Op::Light {
+            light,
+            pname,
+            params,
+        } => ctx.light(*light, *pname, params),
+        Op::LightI {
+            light,
+            pname,
+            params,
+        } => ctx.light_i(*light, *pname, params),
+        Op::LightScalar {
+            light,
+            pname,
+            param,
+        } => ctx.light_scalar(*light, *pname, *param),
+        Op::Material {
+            face,
+            pname,
+            params,
+        } => ctx.material(*face, *pname, params),
+        Op::MaterialI {
+            face,
+            pname,
+            params,
+        } => ctx.material_i(*face, *pname, params),
+        Op::MaterialScalar { face, pname, param } => ctx.material_scalar(*face, *pname, *param),
+        Op::LightModel { pname, params } => ctx.light_model(*pname, params),
+        Op::LightModelI { pname, params } => ctx.light_model_i(*pname, params),
+        Op::LightModelScalar { pname, param } => ctx.light_model_scalar(*pname, *param),
+        Op::ColorMaterial { face, mode } => ctx.color_material(*face, *mode),
+        Op::Capability { cap, enabled } => ctx.set_capability(*cap, *enabled),
+        Op::Color(c) => {
+            ctx.color(*c);
+            Ok(())
+        }
+        Op::Normal(n) => {
+            ctx.normal(*n);
+            Ok(())
+        }
+        Op::TexCoord(t) => {
+            ctx.tex_coord(*t);
+            Ok(())
+        }
+        Op::EdgeFlag(e) => {
+            ctx.edge_flag(*e);
+            Ok(())
+        }
+        Op::MatrixMode(mode) => ctx.matrix_mode(*mode),
+        Op::LoadIdentity => ctx.load_identity(),
+        Op::LoadMatrix(m) => ctx.load_matrix(m),
+        Op::MultMatrix(m) => ctx.mult_matrix(m),
+        Op::LoadTransposeMatrix(m) => ctx.load_transpose_matrix(m),
+        Op::MultTransposeMatrix(m) => ctx.mult_transpose_matrix(m),
+        Op::Translate([x, y, z]) => ctx.translate(*x, *y, *z),
+        Op::Scale([x, y, z]) => ctx.scale(*x, *y, *z),
+        Op::Rotate([a, x, y, z]) => ctx.rotate(*a, *x, *y, *z),
+        Op::Frustum([l, r, b, t, n, f]) => ctx.frustum(*l, *r, *b, *t, *n, *f),
+        Op::Ortho([l, r, b, t, n, f]) => ctx.ortho(*l, *r, *b, *t, *n, *f),
+        Op::PushMatrix => ctx.push_matrix(),
+        Op::PopMatrix => ctx.pop_matrix(),
+        Op::Begin(mode) => ctx.begin(*mode),
+        Op::Vertex(v) => {
+            ctx.vertex(*v);
+            Ok(())
+        }
+        Op::End => ctx.end(),
+        Op::Rect([x1, y1, x2, y2]) => ctx.rect(*x1, *y1, *x2, *y2),
+        Op::FeedbackBuffer {
+            size,
+            kind,
+            address,
+        } => ctx.feedback_buffer(*size, *kind, *address),
+        Op::RenderMode(mode) => {
+            let layout = ctx
+                .get(GL_FEEDBACK_BUFFER_TYPE)
+                .map(|v| v.as_ints()[0] as GLenum);
+            let capacity = ctx.get(GL_FEEDBACK_BUFFER_SIZE).map(|v| v.as_ints()[0]);
+            ctx.render_mode(*mode).map(|(count, finished)| {
+                if let (Some(finished), Ok(kind), Ok(capacity)) = (finished, layout, capacity) {
+                    check = check_feedback(&finished.values, count, capacity, kind);
+                }
+            })
+        }
+        Op::PassThrough(v) => ctx.pass_through(*v),
+        Op::Viewport([x, y, w, h]) => ctx.viewport(*x, *y, *w, *h),
+        Op::DepthRange([n, f]) => ctx.depth_range(*n, *f),
+        Op::ClipPlane { plane, equation } => ctx.clip_plane(*plane, *equation),
+        Op::ShadeModel(mode) => ctx.shade_model(*mode),
+        Op::FrontFace(mode) => ctx.front_face(*mode),
+        Op::CullFace(mode) => ctx.cull_face(*mode),
+        Op::PolygonMode { face, mode } => ctx.polygon_mode(*face, *mode),
+        Op::PointSize(size) => ctx.point_size(*size),
+        Op::LineWidth(width) => ctx.line_width(*width),
+        Op::Hint { target, mode } => ctx.hint(*target, *mode),
+        Op::ClearColor(c) => ctx.clear_color(*c),
+        Op::ClearDepth(d) => ctx.clear_depth(*d),
+        Op::Clear(mask) => ctx.clear(*mask),
+        Op::Finish => ctx.finish(),
+        Op::Pointer {
+            kind,
+            size,
+            component_type,
+            stride,
+            address,
+        } => match kind {
+            ArrayKind::Vertex => ctx.vertex_pointer(*size, *component_type, *stride, *address),
+            ArrayKind::Normal => ctx.normal_pointer(*component_type, *stride, *address),
+            ArrayKind::Color => ctx.color_pointer(*size, *component_type, *stride, *address),
+            ArrayKind::TexCoord => ctx.tex_coord_pointer(*size, *component_type, *stride, *address),
+            ArrayKind::EdgeFlag => ctx.edge_flag_pointer(*stride, *address),
+        },
+        Op::ClientState { array, enabled } => ctx.client_state(*array, *enabled),
+        Op::InterleavedArrays {
+            format,
+            stride,
+            address,
+        } => ctx.interleaved_arrays(*format, *stride, *address),
+        Op::ArrayElement { index, base } => ctx
+            .check_array_element(*index)
+            .and_then(|index| ctx.array_element_from(index, &arrays.sources(base.of(index)))),
+        Op::DrawArrays {
+            mode,
+            first,
+            count,
+            base,
+            spans,
+        } => ctx
+            .check_draw_arrays(*mode, *first, *count)
+            .and_then(|indices| draw(ctx, *mode, &indices, *base, *spans, arrays)),
+        Op::DrawElements {
+            mode,
+            count,
+            index_type,
+            indices,
+            range,
+            base,
+            spans,
+        } => {
+            let size = match range {
+                Some((start, end)) => {
+                    ctx.check_draw_range_elements(*mode, *start, *end, *count, *index_type)
+                }
+                None => ctx.check_draw_elements(*mode, *count, *index_type),
+            };
+            size.and_then(|size| {
+                let indices = ElementIndices::Listed {
+                    index_type: *index_type,
+                    bytes: &indices[..size.min(indices.len())],
+                };
+                draw(ctx, *mode, &indices, *base, *spans, arrays)
+            })
+        }
+        Op::DrawFrom {
+            mode,
+            first,
+            count,
+            base,
+        } => {
+            let indices = ElementIndices::Sequential {
+                first: *first,
+                count: *count,
+            };
+            ctx.draw_arrays_from(*mode, &arrays.sources(base.of(*first)), &indices)
+        }
+        Op::LightVertices {
+            positions,
+            normals,
+            colors,
+            out,
+        } => {
+            let mut lit = vec![BLANK_VERTEX; *out];
+            let result =
+                ctx.light_vertices(positions, normals.as_deref(), colors.as_deref(), &mut lit);
+            if result.is_ok() {
+                check = lit[..positions.len()]
+                    .iter()
+                    .position(|v| !lit_colors_clamped(v))
+                    .map_or(Ok(()), |i| {
+                        Err(format!("light_vertices: vertex {i}: {:?}", lit[i]))
+                    });
+            }
+            result
+        }
+        Op::CaptureBegin => ctx.capture_begin(),
+        Op::CaptureEnd => ctx.capture_end(),
+        Op::Get(pname) => unit(ctx.get(*pname)),
+        Op::GetLight { light, pname, ints } => {
+            if *ints {
+                unit(ctx.get_light_i(*light, *pname))
+            } else {
+                unit(ctx.get_light(*light, *pname))
+            }
+        }
+        Op::GetMaterial { face, pname, ints } => {
+            if *ints {
+                unit(ctx.get_material_i(*face, *pname))
+            } else {
+                unit(ctx.get_material(*face, *pname))
+            }
+        }
+        Op::GetClipPlane(plane) => unit(ctx.get_clip_plane(*plane)),
+        Op::IsEnabled(cap) => unit(ctx.is_enabled(*cap)),
+        Op::GetString(name) => unit(ctx.get_string(*name)),
+        Op::GetPointer(pname) => unit(ctx.get_pointer(*pname)),
+        Op::GetError => unreachable!("the driver reads the error flag"),
+    };
+    (result, check)
+}
+
+/// A vertex array draw as a Rust caller makes one: optionally the C layer's span check, then
+/// the arrays' bytes from `base`.
+fn draw(
+    ctx: &mut Context,
+    mode: GLenum,
+    indices: &ElementIndices,
+    base: Base,
+    spans: bool,
+    arrays: &ArrayBytes,
+) -> GlResult {
+    if spans {
+        ctx.array_spans(indices)?;
+    }
+    let lowest = indices.range().map_or(0, |(lowest, _)| lowest);
+    ctx.draw_arrays_from(mode, &arrays.sources(base.of(lowest)), indices)
+}
+
+/// What `light_vertices` overwrites.
+const BLANK_VERTEX: ProcessedVertex = ProcessedVertex {
+    eye: Vec4::ZERO,
+    clip: Vec4::ZERO,
+    colors: LitVertex {
+        front: FaceColors {
+            primary: Vec4::NAN,
+            secondary: Vec4::NAN,
+        },
+        back: FaceColors {
+            primary: Vec4::NAN,
+            secondary: Vec4::NAN,
+        },
+    },
+    tex_coord: Vec4::ZERO,
+    edge_flag: false,
+};
+
+fn lit_colors_clamped(v: &ProcessedVertex) -> bool {
+    let c = v.colors;
+    [
+        c.front.primary,
+        c.front.secondary,
+        c.back.primary,
+        c.back.secondary,
+    ]
+    .into_iter()
+    .all(clamped)
+}
+
+/// Walks a finished feedback stream (§5.3, figure 5.2): `count` is glRenderMode's result (-1
+/// after an overflow, when the stream is cut at `capacity` values), every token is known,
+/// polygons are fflight's triangles, and every color is in [0, 1].
+fn check_feedback(values: &[f32], count: i32, capacity: i32, kind: GLenum) -> Check {
+    let overflowed = count == -1;
+    if values.len() > capacity as usize || (overflowed && values.len() != capacity as usize) {
+        return Err(format!(
+            "feedback: {} values, count {count}, capacity {capacity}",
+            values.len()
+        ));
+    }
+    if !overflowed && count as usize != values.len() {
+        return Err(format!(
+            "feedback: count {count} for {} values",
+            values.len()
+        ));
+    }
+    let (coords, color, texture) = match kind {
+        GL_2D => (2, false, false),
+        GL_3D => (3, false, false),
+        GL_3D_COLOR => (3, true, false),
+        GL_3D_COLOR_TEXTURE => (3, true, true),
+        GL_4D_COLOR_TEXTURE => (4, true, true),
+        _ => return Err(format!("feedback type {kind:#x}")),
+    };
+    let vertex_len = coords + 4 * color as usize + 4 * texture as usize;
+    let mut i = 0;
+    while i < values.len() {
+        let token = values[i];
+        let vertices = match token as GLenum {
+            GL_POINT_TOKEN => 1,
+            GL_LINE_TOKEN | GL_LINE_RESET_TOKEN => 2,
+            GL_POLYGON_TOKEN => match values.get(i + 1) {
+                Some(&3.0) => {
+                    i += 1;
+                    3
+                }
+                None if overflowed => return Ok(()),
+                n => return Err(format!("feedback: polygon of {n:?} vertices at {i}")),
+            },
+            GL_PASS_THROUGH_TOKEN => {
+                i += 2;
+                continue;
+            }
+            _ => return Err(format!("feedback: value {token} at {i} is no token")),
+        };
+        if token != (token as GLenum) as f32 {
+            return Err(format!("feedback: token {token} at {i}"));
+        }
+        i += 1;
+        for _ in 0..vertices {
+            let Some(vertex) = values.get(i..i + vertex_len) else {
+                return match overflowed {
+                    true => Ok(()),
+                    false => Err(format!("feedback: vertex cut at {i} without overflow")),
+                };
+            };
+            if color && !clamped(Vec4::from_slice(&vertex[coords..coords + 4])) {
+                return Err(format!("feedback: color {vertex:?} at {i} outside [0, 1]"));
+            }
+            i += vertex_len;
+        }
+    }
+    Ok(())
+}
+
+// ---- what the queries report ----
+
+/// Which query a snapshot entry came from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Key {
+    InsideBeginEnd,
+    Get(GLenum),
+    Light(GLenum, GLenum),
+    Material(GLenum, GLenum),
+    ClipPlane(GLenum),
+    Pointer(GLenum),
+    Capture,
+    Feedback,
+    MatrixStack(GLenum, usize),
+}
+
+/// Everything the public queries report about a context, as bits (NaN equals itself, 0 and
+/// -0 differ): what a failed command must leave exactly as it was.
+#[derive(Default)]
+struct Snapshot {
+    values: Vec<u64>,
+    /// Each entry's key and where its values start.
+    keys: Vec<(Key, usize)>,
+}
+
+const ERROR_TAG: u64 = 0xE000_0000;
+
+impl Snapshot {
+    /// Starts the entry of `key`: its values follow.
+    fn start(&mut self, key: Key) -> &mut Vec<u64> {
+        self.keys.push((key, self.values.len()));
+        &mut self.values
+    }
+
+    fn push(&mut self, key: Key, values: impl IntoIterator<Item = u64>) {
+        self.keys.push((key, self.values.len()));
+        self.values.extend(values);
+    }
+
+    /// A glGetLight / glGetMaterial result: the values the pname defines.
+    fn push_vector(&mut self, key: Key, result: GlResult<(Vec4, usize)>) {
+        let values = self.start(key);
+        match result {
+            Ok((v, n)) => values.extend(v.to_array()[..n].iter().map(|f| f.to_bits() as u64)),
+            Err(error) => values.push(ERROR_TAG | error.code() as u64),
+        }
+    }
+
+    /// The snapshot of `ctx`, taken on a copy: a primitive in progress is ended there (its
+    /// vertices show in capture and feedback), the feedback buffer is read by leaving feedback
+    /// mode, and every matrix stack is popped to the bottom.
+    fn of(ctx: &Context) -> Snapshot {
+        let mut c = ctx.clone();
+        let mut s = Snapshot::default();
+        s.push(Key::InsideBeginEnd, [c.inside_begin_end() as u64]);
+        if c.inside_begin_end() {
+            c.end().expect("glEnd ends the primitive in progress");
+        }
+        for &pname in CAPS[..VALID_CAPS].iter().chain(&GET_PNAMES) {
+            let values = s.start(Key::Get(pname));
+            match c.get(pname) {
+                Ok(StateValue::Bools(v)) => values.extend(v.iter().map(|&b| 0x100 | b as u64)),
+                Ok(StateValue::Ints(v)) => {
+                    values.extend(v.iter().map(|&i| 0x200_0000_0000 | i as u32 as u64))
+                }
+                Ok(StateValue::Floats(v) | StateValue::Normalized(v)) => {
+                    values.extend(v.iter().map(|f| f.to_bits()))
+                }
+                Err(error) => values.push(ERROR_TAG | error.code() as u64),
+            }
+        }
+        for light in LIGHTS {
+            for pname in LIGHT_PNAMES {
+                s.push_vector(Key::Light(light, pname), c.get_light(light, pname));
+            }
+        }
+        for face in [GL_FRONT, GL_BACK] {
+            for pname in MATERIAL_QUERIES {
+                s.push_vector(Key::Material(face, pname), c.get_material(face, pname));
+            }
+        }
+        for plane in CLIP_PLANES {
+            let equation = c.get_clip_plane(plane).expect("a clip plane");
+            s.push(Key::ClipPlane(plane), equation.map(f64::to_bits));
+        }
+        for pname in POINTER_PNAMES {
+            let address = c.get_pointer(pname).expect("a pointer");
+            s.push(Key::Pointer(pname), [address as u64]);
+        }
+        // Capture only grows (or restarts): its counts and last entries show any change.
+        let capture = c.captured();
+        let (vertices, primitives) = (capture.vertices(), capture.primitives());
+        let mut captured = vec![
+            capture.is_active() as u64,
+            vertices.len() as u64,
+            primitives.len() as u64,
+        ];
+        for v in &vertices[vertices.len().saturating_sub(4)..] {
+            let c = v.colors;
+            let vectors = [
+                v.eye,
+                v.clip,
+                c.front.primary,
+                c.front.secondary,
+                c.back.primary,
+                c.back.secondary,
+                v.tex_coord,
+            ];
+            captured.extend(
+                vectors
+                    .iter()
+                    .flat_map(|x| x.to_array().map(|f| f.to_bits() as u64)),
+            );
+            captured.push(v.edge_flag as u64);
+        }
+        for p in &primitives[primitives.len().saturating_sub(4)..] {
+            captured.extend([p.kind as u64, p.mode as u64, p.draw as u64]);
+            captured.extend(p.vertices.map(|i| i as u64));
+            captured.extend(p.edges.map(|e| e as u64));
+        }
+        s.push(Key::Capture, captured);
+        // Leaving feedback mode hands over what the buffer holds (the copy's, not ctx's).
+        let (count, finished) = c.render_mode(GL_RENDER).expect("glRenderMode(GL_RENDER)");
+        let values = finished.map(|f| f.values).unwrap_or_default();
+        s.push(
+            Key::Feedback,
+            [count as u64, values.len() as u64]
+                .into_iter()
+                .chain(values.iter().map(|v| v.to_bits() as u64)),
+        );
+        for mode in MATRIX_MODES {
+            c.matrix_mode(mode).expect("a matrix mode");
+            let pname = match mode {
+                GL_MODELVIEW => GL_MODELVIEW_MATRIX,
+                GL_PROJECTION => GL_PROJECTION_MATRIX,
+                _ => GL_TEXTURE_MATRIX,
+            };
+            for level in 0.. {
+                let top = c.get(pname).expect("a matrix").as_doubles();
+                s.push(
+                    Key::MatrixStack(mode, level),
+                    top.into_iter().map(f64::to_bits),
+                );
+                if c.pop_matrix().is_err() {
+                    break;
+                }
+            }
+        }
+        s
+    }
+
+    /// The first entry that differs from `other`'s, described.
+    fn difference(&self, other: &Snapshot) -> Option<String> {
+        if self.values == other.values && self.keys == other.keys {
+            return None;
+        }
+        let entry = |s: &Snapshot, k: usize| {
+            let start = s.keys.get(k).map_or(s.values.len(), |e| e.1);
+            let end = s.keys.get(k + 1).map_or(s.values.len(), |e| e.1);
+            (s.keys.get(k).map(|e| e.0), s.values[start..end].to_vec())
+        };
+        (0..self.keys.len().max(other.keys.len()))
+            .map(|k| (entry(self, k), entry(other, k)))
+            .find(|(a, b)| a != b)
+            .map(|((key, was), (_, is))| format!("{key:?}: {was:x?}\n  became {is:x?}"))
+    }
+}
+
+// ---- the Rust sequences ----
+
+/// One random sequence of `seed`: panics with the seed, the failing call and the calls before
+/// it when a call panics, a failed call changes what the queries report, the error flag is
+/// wrong, or a fed-back, captured or lit color leaves [0, 1]. A third of the sequences feed
+/// NaN and infinities, the others only finite values (so that lit colors mean something).
+/// Returns how many calls it made and how many failed.
+fn sequence(seed: u64) -> (usize, usize) {
+    let mut rng = Rng(seed);
+    let finite = !rng.one_in(3);
+    let arrays = ArrayBytes::random(&mut rng, finite);
+    let mut ctx = Context::new();
+    let mut first_error = None;
+    let mut history: Vec<Op> = Vec::new();
+    let fail = |history: &[Op], step: usize, what: &str| -> ! {
+        let recent = history.len().saturating_sub(12);
+        let calls: Vec<String> = history[recent..]
+            .iter()
+            .enumerate()
+            .map(|(i, op)| format!("  {}: {op:?}", recent + i))
+            .collect();
+        panic!(
+            "sequence({seed}) (finite inputs: {finite}), call {step}: {what}\ncalls:\n{}",
+            calls.join("\n")
+        );
+    };
+
+    // A prologue that makes feedback, capture and lighting likely, through the same checks.
+    let mut prologue = Vec::new();
+    if rng.coin() {
+        prologue.push(Op::Viewport([0, 0, 64, 48]));
+    }
+    if !rng.one_in(4) {
+        prologue.push(Op::FeedbackBuffer {
+            size: rng.below(4000) as i32,
+            kind: rng.pick(&FEEDBACK_TYPES),
+            address: 0x1000,
+        });
+        prologue.push(Op::RenderMode(GL_FEEDBACK));
+    }
+    if !rng.one_in(4) {
+        prologue.push(Op::CaptureBegin);
+    }
+    if rng.coin() {
+        prologue.push(Op::Capability {
+            cap: GL_LIGHTING,
+            enabled: true,
+        });
+        prologue.push(Op::Capability {
+            cap: rng.pick(&LIGHTS),
+            enabled: true,
+        });
+    }
+    if !rng.one_in(4) {
+        prologue.push(Op::Pointer {
+            kind: ArrayKind::Vertex,
+            size: rng.range(2, 4) as i32,
+            component_type: rng.pick(&[GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE]),
+            stride: 0,
+            address: 0x1000,
+        });
+        prologue.push(Op::ClientState {
+            array: GL_VERTEX_ARRAY,
+            enabled: true,
+        });
+        if rng.coin() {
+            prologue.push(Op::Pointer {
+                kind: ArrayKind::Color,
+                size: 4,
+                component_type: rng.pick(&COMPONENT_TYPES),
+                stride: 0,
+                address: 0x2000,
+            });
+            prologue.push(Op::ClientState {
+                array: GL_COLOR_ARRAY,
+                enabled: true,
+            });
+        }
+    }
+
+    let steps = prologue.len() + 20 + rng.below(100);
+    let mut failed = 0;
+    // The snapshot of the state since the last failed call, while no other call could change it.
+    let mut unchanged: Option<Snapshot> = None;
+    for step in 0..steps {
+        let op = match prologue.get(step) {
+            Some(op) => op.clone(),
+            None => next_op(&mut rng, ctx.inside_begin_end(), finite),
+        };
+        history.push(op.clone());
+        if let Op::GetError = op {
+            let got = ctx.get_error();
+            let want = first_error.take().unwrap_or(GL_NO_ERROR);
+            if got != want {
+                fail(
+                    &history,
+                    step,
+                    &format!("get_error {got:#x}, expected {want:#x}"),
+                );
+            }
+            continue;
+        }
+        let must_fail = op.must_fail(ctx.inside_begin_end());
+        let before = ctx.clone();
+        let (result, check) = match catch_unwind(AssertUnwindSafe(|| apply(&mut ctx, &op, &arrays)))
+        {
+            Ok(outcome) => outcome,
+            Err(_) => fail(&history, step, "panicked"),
+        };
+        if let Err(problem) = check {
+            fail(&history, step, &problem);
+        }
+        if must_fail && result.is_ok() {
+            fail(&history, step, "accepted a call GL must reject");
+        }
+        if let Err(error) = result {
+            failed += 1;
+            let earlier = unchanged.take().unwrap_or_else(|| Snapshot::of(&before));
+            let now = Snapshot::of(&ctx);
+            if let Some(change) = earlier.difference(&now) {
+                fail(&history, step, &format!("{error:?}, but changed {change}"));
+            }
+            unchanged = Some(now);
+            first_error.get_or_insert(error.code());
+        }
+        if result.is_ok() && !op.is_query() {
+            unchanged = None;
+        }
+        ctx.settle(result);
+    }
+
+    // Finish: end the primitive, check what capture collected, end feedback.
+    if ctx.inside_begin_end() {
+        ctx.end().expect("glEnd");
+    }
+    let captured = ctx.captured().vertices();
+    if let Some(i) = captured.iter().position(|v| !lit_colors_clamped(v)) {
+        let what = format!("captured vertex {i}: {:?}", captured[i]);
+        fail(&history, steps, &what);
+    }
+    let (result, check) = apply(&mut ctx, &Op::RenderMode(GL_RENDER), &arrays);
+    history.push(Op::RenderMode(GL_RENDER));
+    if let Err(problem) = check.and(result.map_err(|e| format!("{e:?}"))) {
+        fail(&history, steps, &problem);
+    }
+    if ctx.get_error() != first_error.unwrap_or(GL_NO_ERROR) {
+        fail(&history, steps, "the error flag lost its first error");
+    }
+    (steps, failed)
+}
+
+fn sequences(seeds: std::ops::Range<u64>) {
+    let (mut calls, mut failed) = (0, 0);
+    for seed in seeds.clone() {
+        let (c, f) = sequence(seed);
+        calls += c;
+        failed += f;
+    }
+    // The sequences must exercise both sides of the rule.
+    let n = seeds.end - seeds.start;
+    assert!(calls > 50 * n as usize, "{calls} calls in {n} sequences");
+    assert!(
+        failed > calls / 5 && failed < calls * 4 / 5,
+        "{failed} of {calls} failed"
+    );
+}
+
+// Four tests, so the harness runs them in parallel.
+
+#[test]
+fn random_sequences_0() {
+    sequences(0..600);
+}
+
+#[test]
+fn random_sequences_1() {
+    sequences(600..1200);
+}
+
+#[test]
+fn random_sequences_2() {
+    sequences(1200..1800);
+}
+
+#[test]
+fn random_sequences_3() {
+    sequences(1800..2400);
+}
+
+/// Found by these sequences: sequential indices ending at usize::MAX overflowed the index
+/// iterator (a panic in debug builds, an out-of-bounds read in release ones).
+#[test]
+fn sequential_draws_end_at_the_last_index() {
+    let mut ctx = Context::new();
+    let positions: Vec<u8> = [0.0f32, 0.0, 0.5, 0.5]
+        .iter()
+        .flat_map(|v| v.to_ne_bytes())
+        .collect();
+    ctx.vertex_pointer(2, GL_FLOAT, 0, 0x1000).unwrap();
+    ctx.client_state(GL_VERTEX_ARRAY, true).unwrap();
+    ctx.capture_begin().unwrap();
+    let last_two = ElementIndices::Sequential {
+        first: usize::MAX - 1,
+        count: 2,
+    };
+    let sources = ArraySources::new(usize::MAX - 1).with(ArrayKind::Vertex, &positions);
+    assert_eq!(ctx.draw_arrays_from(GL_LINES, &sources, &last_two), Ok(()));
+    assert_eq!(ctx.captured().vertices().len(), 2);
+    assert_eq!(ctx.captured().primitives().len(), 1);
+    for (first, count) in [(usize::MAX - 1, 3), (usize::MAX, 2), (2, usize::MAX)] {
+        let past_the_end = ElementIndices::Sequential { first, count };
+        let sources = ArraySources::new(first).with(ArrayKind::Vertex, &positions);
+        assert_eq!(
+            ctx.draw_arrays_from(GL_POINTS, &sources, &past_the_end),
+            Err(GlError::InvalidValue),
+            "first {first}, count {count}"
+        );
+    }
+    assert_eq!(ctx.captured().vertices().len(), 2);
+}
+
+// ---- the C entry points ----
+
+unsafe extern "C" {
+    fn glClipPlane(plane: GLenum, equation: *const GLdouble);
+    fn glGetClipPlane(plane: GLenum, equation: *mut GLdouble);
+    fn glShadeModel(mode: GLenum);
+    fn glFrontFace(mode: GLenum);
+    fn glCullFace(mode: GLenum);
+    fn glPolygonMode(face: GLenum, mode: GLenum);
+    fn glHint(target: GLenum, mode: GLenum);
+    fn glRectfv(v1: *const GLfloat, v2: *const GLfloat);
+    fn glRectdv(v1: *const GLdouble, v2: *const GLdouble);
+    fn glVertex2fv(v: *const GLfloat);
+    fn glVertex4fv(v: *const GLfloat);
+    fn glVertex2sv(v: *const GLshort);
+    fn glVertex3dv(v: *const GLdouble);
+    fn glVertex4iv(v: *const GLint);
+    fn glVertexPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c_void);
+    fn glColorPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c_void);
+    fn glEnableClientState(array: GLenum);
+    fn glDisableClientState(array: GLenum);
+    fn glInterleavedArrays(format: GLenum, stride: GLsizei, ptr: *const c_void);
+    fn glGetPointerv(pname: GLenum, params: *mut *mut c_void);
+    fn glArrayElement(i: GLint);
+    fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei);
+    fn glDrawElements(mode: GLenum, count: GLsizei, ty: GLenum, indices: *const c_void);
+    fn glDrawRangeElements(
+        mode: GLenum,
+        start: GLuint,
+        end: GLuint,
+        count: GLsizei,
+        ty: GLenum,
+        indices: *const c_void,
+    );
+    fn fflCaptureBegin();
+    fn fflCaptureEnd();
+    fn fflCaptureReadVertices(first: GLuint, count: GLuint, out: *mut c_void) -> GLuint;
+    fn fflCaptureReadPrimitives(first: GLuint, count: GLuint, out: *mut c_void) -> GLuint;
+    fn fflLightVertices(
+        count: GLsizei,
+        position_size: GLint,
+        positions: *const GLfloat,
+        position_stride: GLsizei,
+        normals: *const GLfloat,
+        normal_stride: GLsizei,
+        colors: *const GLfloat,
+        color_stride: GLsizei,
+        eye: *mut GLfloat,
+        eye_stride: GLsizei,
+        clip: *mut GLfloat,
+        clip_stride: GLsizei,
+        front_primary: *mut GLfloat,
+        front_primary_stride: GLsizei,
+        front_secondary: *mut GLfloat,
+        front_secondary_stride: GLsizei,
+        back_primary: *mut GLfloat,
+        back_primary_stride: GLsizei,
+        back_secondary: *mut GLfloat,
+        back_secondary_stride: GLsizei,
+    );
+}
+
+fn current_snapshot() -> Snapshot {
+    with_current(|ctx| Snapshot::of(ctx)).expect("a current context")
+}
+
+/// A call GL must reject: a NULL pointer where the command needs one (with enum arguments
+/// valid or not), or an invalid enum. Returns the call's name for the failure report.
+///
+/// # Safety
+/// Every non-NULL pointer passed is valid for what the command reads or writes.
+unsafe fn bad_call(rng: &mut Rng) -> String {
+    let light = rng.enumeration(&LIGHTS);
+    let light_pname = rng.enumeration(&LIGHT_PNAMES);
+    let face = rng.enumeration(&FACES);
+    let material_pname = rng.enumeration(&MATERIAL_PNAMES);
+    let model_pname = rng.enumeration(&LIGHT_MODEL_PNAMES);
+    let pname = rng.enumeration(&GET_PNAMES);
+    let plane = rng.enumeration(&CLIP_PLANES);
+    let mode = rng.enumeration(&PRIMITIVES);
+    let count = 1 + rng.below(8) as i32;
+    let floats = [0.5f32; 4];
+    let doubles = [0.5f64; 4];
+    let call = rng.below(52);
+    // SAFETY: NULL pointers, or pointers to local arrays of 4 values, enough for every call.
+    unsafe {
+        match call {
+            0 => glLightfv(light, light_pname, null()),
+            1 => glLightiv(light, light_pname, null()),
+            2 => glGetLightfv(light, light_pname, null_mut()),
+            3 => glGetLightiv(light, light_pname, null_mut()),
+            4 => glMaterialfv(face, material_pname, null()),
+            5 => glMaterialiv(face, material_pname, null()),
+            6 => glGetMaterialfv(
+                rng.enumeration(&[GL_FRONT, GL_BACK]),
+                material_pname,
+                null_mut(),
+            ),
+            7 => glGetMaterialiv(
+                rng.enumeration(&[GL_FRONT, GL_BACK]),
+                material_pname,
+                null_mut(),
+            ),
+            8 => glLightModelfv(model_pname, null()),
+            9 => glLightModeliv(model_pname, null()),
+            10 => glGetBooleanv(pname, null_mut()),
+            11 => glGetIntegerv(pname, null_mut()),
+            12 => glGetFloatv(pname, null_mut()),
+            13 => glGetDoublev(pname, null_mut()),
+            14 => glLoadMatrixf(null()),
+            15 => glLoadMatrixd(null()),
+            16 => glMultMatrixf(null()),
+            17 => glMultMatrixd(null()),
+            18 => glLoadTransposeMatrixf(null()),
+            19 => glMultTransposeMatrixd(null()),
+            20 => glClipPlane(plane, null()),
+            21 => glGetClipPlane(plane, null_mut()),
+            22 => glColor3fv(null()),
+            23 => glColor4ubv(null()),
+            24 => glColor4dv(null()),
+            25 => glNormal3fv(null()),
+            26 => glNormal3bv(null()),
+            27 => glTexCoord2fv(null()),
+            28 => glTexCoord4dv(null()),
+            29 => match rng.below(5) {
+                0 => glVertex2fv(null()),
+                1 => glVertex3fv(null()),
+                2 => glVertex4fv(null()),
+                3 => glVertex2sv(null()),
+                _ => glVertex3dv(null()),
+            },
+            30 => glVertex4iv(null()),
+            31 => glEdgeFlagv(null()),
+            32 => match rng.coin() {
+                true => glRectfv(null(), floats.as_ptr()),
+                false => glRectdv(doubles.as_ptr(), null()),
+            },
+            33 => glFeedbackBuffer(count, rng.enumeration(&FEEDBACK_TYPES), null_mut()),
+            34 => glGetPointerv(rng.enumeration(&POINTER_PNAMES), null_mut()),
+            35 => glDrawElements(mode, count, rng.enumeration(&INDEX_TYPES), null()),
+            36 => glDrawRangeElements(mode, 0, 9, count, rng.enumeration(&INDEX_TYPES), null()),
+            37 => fflLightVertices(
+                count,
+                rng.range(1, 5) as i32,
+                null(),
+                0,
+                null(),
+                0,
+                null(),
+                0,
+                null_mut(),
+                0,
+                null_mut(),
+                0,
+                null_mut(),
+                0,
+                null_mut(),
+                0,
+                null_mut(),
+                0,
+                null_mut(),
+                0,
+            ),
+            // Wrong enums.
+            38 => match rng.coin() {
+                true => glEnable(rng.invalid_enum(&CAPS[..VALID_CAPS])),
+                false => glDisable(rng.invalid_enum(&CAPS[..VALID_CAPS])),
+            },
+            39 => {
+                glIsEnabled(rng.invalid_enum(&CAPS[..VALID_CAPS]));
+            }
+            40 => match rng.coin() {
+                true => glLightf(rng.invalid_enum(&LIGHTS), light_pname, 1.0),
+                false => glLighti(light, rng.invalid_enum(&LIGHT_PNAMES), 1),
+            },
+            41 => match rng.coin() {
+                true => glMaterialf(rng.invalid_enum(&FACES), GL_SHININESS, 1.0),
+                false => glMaterialfv(face, rng.invalid_enum(&MATERIAL_PNAMES), floats.as_ptr()),
+            },
+            42 => match rng.coin() {
+                true => glLightModeli(rng.invalid_enum(&LIGHT_MODEL_PNAMES), 0),
+                false => glLightModeli(
+                    GL_LIGHT_MODEL_COLOR_CONTROL,
+                    rng.invalid_enum(&[GL_SINGLE_COLOR, GL_SEPARATE_SPECULAR_COLOR]) as i32,
+                ),
+            },
+            43 => match rng.coin() {
+                true => glColorMaterial(rng.invalid_enum(&FACES), GL_DIFFUSE),
+                false => glColorMaterial(face, rng.invalid_enum(&COLOR_MATERIAL_MODES)),
+            },
+            44 => glMatrixMode(rng.invalid_enum(&MATRIX_MODES)),
+            45 => glBegin(rng.invalid_enum(&PRIMITIVES)),
+            46 => match rng.below(5) {
+                0 => glShadeModel(rng.invalid_enum(&SHADE_MODELS)),
+                1 => glFrontFace(rng.invalid_enum(&WINDINGS)),
+                2 => glCullFace(rng.invalid_enum(&FACES)),
+                3 => glPolygonMode(face, rng.invalid_enum(&POLYGON_MODES)),
+                _ => glHint(
+                    rng.enumeration(&HINT_TARGETS),
+                    rng.invalid_enum(&HINT_MODES),
+                ),
+            },
+            47 => {
+                glRenderMode(rng.invalid_enum(&RENDER_MODES));
+            }
+            48 => {
+                assert!(glGetString(rng.invalid_enum(&STRING_NAMES)).is_null());
+            }
+            49 => match rng.coin() {
+                true => glEnableClientState(rng.invalid_enum(&CLIENT_ARRAYS)),
+                false => glInterleavedArrays(rng.invalid_enum(&INTERLEAVED_FORMATS), 0, null()),
+            },
+            50 => glDrawArrays(rng.invalid_enum(&PRIMITIVES), 0, count),
+            _ => glVertexPointer(4, rng.invalid_enum(&COMPONENT_TYPES[2..]), 0, null()),
+        }
+    }
+    format!("bad call {call}")
+}
+
+/// A position for the arrays the C setups enable.
+static POSITION: [GLfloat; 3] = [0.0, 0.0, -0.5];
+
+/// A call that fails because of state its setup leaves (an enabled array with a NULL pointer,
+/// captured data to read into NULL): runs the setup, returns the call.
+fn setup_bad_call(rng: &mut Rng) -> (&'static str, Box<dyn FnOnce()>) {
+    let mode = rng.enumeration(&PRIMITIVES);
+    let count = 1 + rng.below(8) as i32;
+    // SAFETY (all blocks): NULL pointers, which the commands store or reject, or POSITION,
+    // which lives as long as the program.
+    match rng.below(4) {
+        0 => {
+            unsafe {
+                glVertexPointer(3, GL_FLOAT, 0, null());
+                glEnableClientState(GL_VERTEX_ARRAY);
+            }
+            (
+                "glDrawArrays, NULL vertex array",
+                Box::new(move || unsafe { glDrawArrays(mode, 0, count) }),
+            )
+        }
+        1 => {
+            unsafe { glInterleavedArrays(rng.pick(&INTERLEAVED_FORMATS), 0, null()) };
+            (
+                "glArrayElement, NULL interleaved arrays",
+                Box::new(|| unsafe { glArrayElement(0) }),
+            )
+        }
+        2 => {
+            unsafe {
+                glVertexPointer(3, GL_FLOAT, 0, POSITION.as_ptr().cast());
+                glEnableClientState(GL_VERTEX_ARRAY);
+                glColorPointer(4, GL_FLOAT, 0, null());
+                glEnableClientState(GL_COLOR_ARRAY);
+            }
+            (
+                "glDrawArrays, NULL color array",
+                Box::new(move || unsafe { glDrawArrays(mode, 0, 1) }),
+            )
+        }
+        _ => {
+            unsafe { fflCaptureBegin() };
+            glBegin(GL_TRIANGLES);
+            for _ in 0..3 {
+                glVertex3f(0.0, 0.0, -0.5);
+            }
+            glEnd();
+            unsafe { fflCaptureEnd() };
+            if rng.coin() {
+                (
+                    "fflCaptureReadPrimitives into NULL",
+                    Box::new(|| unsafe {
+                        fflCaptureReadPrimitives(0, 1, null_mut());
+                    }),
+                )
+            } else {
+                (
+                    "fflCaptureReadVertices into NULL",
+                    Box::new(|| unsafe {
+                        fflCaptureReadVertices(1, 3, null_mut());
+                    }),
+                )
+            }
+        }
+    }
+}
+
+/// Random valid state for the bad calls to meet: lighting, feedback into `buffer`, capture.
+fn random_valid_state(rng: &mut Rng, buffer: &mut [GLfloat]) {
+    glViewport(0, 0, 64, 64);
+    if rng.coin() {
+        glEnable(GL_LIGHTING);
+        glEnable(rng.pick(&LIGHTS));
+    } else {
+        glDisable(GL_LIGHTING);
+    }
+    // SAFETY: no pointers.
+    unsafe { glDisableClientState(GL_COLOR_ARRAY) };
+    glRenderMode(GL_RENDER);
+    if rng.coin() {
+        let kind = rng.pick(&FEEDBACK_TYPES);
+        // SAFETY: `buffer` outlives the context's use of it (the test ends feedback).
+        unsafe { glFeedbackBuffer(buffer.len() as i32, kind, buffer.as_mut_ptr()) };
+        glRenderMode(GL_FEEDBACK);
+    }
+    if rng.coin() {
+        // SAFETY: no pointers.
+        unsafe { fflCaptureBegin() };
+    }
+    expect_no_error("the valid setup");
+}
+
+#[test]
+fn c_calls_with_null_pointers_and_wrong_enums_set_an_error_and_change_nothing() {
+    let _context = fresh();
+    let mut rng = Rng(0xC0FFEE);
+    let mut buffer = vec![0.0f32; 4096];
+    for round in 0..3000 {
+        if round % 50 == 0 {
+            random_valid_state(&mut rng, &mut buffer);
+        }
+        let setup = rng.one_in(5).then(|| setup_bad_call(&mut rng));
+        expect_no_error("the setup");
+        let inside = rng.one_in(3);
+        if inside {
+            glBegin(rng.pick(&PRIMITIVES));
+            for _ in 0..rng.below(4) {
+                glVertex3f(rng.uniform(-1.0, 1.0) as f32, 0.5, -0.5);
+            }
+        }
+        let before = current_snapshot();
+        let name = match setup {
+            Some((name, call)) => {
+                call();
+                name.to_string()
+            }
+            // SAFETY: the calls pass NULL or local arrays of four values.
+            None => unsafe { bad_call(&mut rng) },
+        };
+        let after = current_snapshot();
+        let what = format!("round {round}, {name} (inside glBegin/glEnd: {inside})");
+        if let Some(change) = before.difference(&after) {
+            panic!("{what}: changed {change}");
+        }
+        if inside {
+            glEnd();
+        }
+        assert_ne!(glGetError(), GL_NO_ERROR, "{what}: no error");
+        assert_eq!(
+            glGetError(),
+            GL_NO_ERROR,
+            "{what}: the flag was not cleared"
+        );
+    }
+    glRenderMode(GL_RENDER);
+}
