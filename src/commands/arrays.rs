@@ -320,6 +320,9 @@ impl Context {
         let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
         check_mode(mode)?;
         let size = index_size(index_type).ok_or(GlError::InvalidEnum)?;
+        if !self.arrays.get(ArrayKind::Vertex).enabled {
+            return Ok(0); // nothing is drawn, so not even the indices are read
+        }
         Ok(count * size)
     }
 

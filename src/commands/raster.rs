@@ -113,7 +113,7 @@ impl Context {
     /// glClearColor: clamped to [0, 1] and stored.
     pub fn clear_color(&mut self, color: Vec4) -> GlResult {
         self.outside_begin_end()?;
-        self.raster.clear_color = color.clamp(Vec4::ZERO, Vec4::ONE);
+        self.raster.clear_color = crate::lighting::clamp01(color);
         Ok(())
     }
 

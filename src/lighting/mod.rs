@@ -45,7 +45,7 @@ pub struct VertexInput {
 /// Clamps each component to [0, 1] (§2.14.8). A NaN component, whose result GL leaves
 /// unspecified (§2.1.1), becomes 0 on every target: glam's `clamp` gives 0 with SSE2 and in its
 /// scalar code but keeps NaN with NEON, whose max propagates it.
-fn clamp01(c: Vec4) -> Vec4 {
+pub(crate) fn clamp01(c: Vec4) -> Vec4 {
     Vec4::select(c.cmpgt(Vec4::ZERO), c.min(Vec4::ONE), Vec4::ZERO)
 }
 
