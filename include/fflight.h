@@ -537,6 +537,22 @@ typedef struct FflCapturedPrimitive {
 #define GL_FEEDBACK_BUFFER_POINTER 3568
 #endif
 
+#ifndef GL_SELECTION_BUFFER_POINTER
+#define GL_SELECTION_BUFFER_POINTER 3571
+#endif
+
+#ifndef GL_SELECTION_BUFFER_SIZE
+#define GL_SELECTION_BUFFER_SIZE 3572
+#endif
+
+#ifndef GL_NAME_STACK_DEPTH
+#define GL_NAME_STACK_DEPTH 3440
+#endif
+
+#ifndef GL_MAX_NAME_STACK_DEPTH
+#define GL_MAX_NAME_STACK_DEPTH 3383
+#endif
+
 #ifndef GL_SHADE_MODEL
 #define GL_SHADE_MODEL 2900
 #endif
@@ -1463,7 +1479,8 @@ void glFeedbackBuffer(GLsizei size, GLenum kind, GLfloat *buffer);
 
 /*
  Ending feedback writes the collected values (never more than the buffer's size) to the
- buffer glFeedbackBuffer gave.
+ buffer glFeedbackBuffer gave; ending selection writes the hit records (never more than the
+ buffer's size) to the buffer glSelectBuffer gave.
  */
 GLint glRenderMode(GLenum mode);
 
@@ -1726,6 +1743,19 @@ void glRectfv(const GLfloat *v1, const GLfloat *v2);
  `v1` and `v2` are NULL or point to 2 values each.
  */
 void glRectdv(const GLdouble *v1, const GLdouble *v2);
+
+/*
+ `buffer` must have room for `size` unsigned integers until glRenderMode ends selection.
+ */
+void glSelectBuffer(GLsizei size, GLuint *buffer);
+
+void glInitNames(void);
+
+void glPushName(GLuint name);
+
+void glPopName(void);
+
+void glLoadName(GLuint name);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -19,6 +19,7 @@ use crate::state::raster::RasterState;
 pub enum RenderMode {
     Render,
     Feedback,
+    Select,
 }
 
 /// The primitive being specified between glBegin and glEnd.
@@ -45,6 +46,7 @@ pub struct Context {
     pub(crate) feedback: FeedbackBuffer,
     /// The address glFeedbackBuffer was given: only the C layer writes through it.
     pub(crate) feedback_address: usize,
+    pub(crate) selection: crate::pipeline::select::Selection,
     pub(crate) primitive: Option<PrimitiveInProgress>,
     pub(crate) arrays: crate::state::arrays::VertexArrays,
     pub(crate) capture: crate::pipeline::capture::Capture,
@@ -73,6 +75,7 @@ impl Context {
             render_mode: RenderMode::Render,
             feedback: FeedbackBuffer::default(),
             feedback_address: 0,
+            selection: Default::default(),
             primitive: None,
             arrays: Default::default(),
             capture: Default::default(),

@@ -363,7 +363,7 @@ const CAPS: [GLenum; 56] = [
 /// How many of `CAPS` are capabilities.
 const VALID_CAPS: usize = 53;
 /// Every glGet pname fflight answers, besides the capabilities.
-const GET_PNAMES: [GLenum; 66] = [
+const GET_PNAMES: [GLenum; 69] = [
     GL_MAX_LIGHTS,
     GL_MAX_CLIP_PLANES,
     GL_MAX_VIEWPORT_DIMS,
@@ -412,6 +412,9 @@ const GET_PNAMES: [GLenum; 66] = [
     GL_RENDER_MODE,
     GL_FEEDBACK_BUFFER_SIZE,
     GL_FEEDBACK_BUFFER_TYPE,
+    GL_SELECTION_BUFFER_SIZE,
+    GL_NAME_STACK_DEPTH,
+    GL_MAX_NAME_STACK_DEPTH,
     GL_VERTEX_ARRAY,
     GL_NORMAL_ARRAY,
     GL_COLOR_ARRAY,
@@ -498,13 +501,14 @@ const INTERLEAVED_FORMATS: [GLenum; 14] = [
     GL_T2F_C4F_N3F_V3F,
     GL_T4F_C4F_N3F_V4F,
 ];
-const POINTER_PNAMES: [GLenum; 6] = [
+const POINTER_PNAMES: [GLenum; 7] = [
     GL_VERTEX_ARRAY_POINTER,
     GL_NORMAL_ARRAY_POINTER,
     GL_COLOR_ARRAY_POINTER,
     GL_TEXTURE_COORD_ARRAY_POINTER,
     GL_EDGE_FLAG_ARRAY_POINTER,
     GL_FEEDBACK_BUFFER_POINTER,
+    GL_SELECTION_BUFFER_POINTER,
 ];
 const STRING_NAMES: [GLenum; 4] = [GL_VENDOR, GL_RENDERER, GL_VERSION, GL_EXTENSIONS];
 const ARRAY_KINDS: [ArrayKind; 5] = [

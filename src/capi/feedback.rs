@@ -30,11 +30,16 @@ pub extern "C" fn glFeedbackBuffer(size: GLsizei, kind: GLenum, buffer: *mut GLf
 }
 
 /// Ending feedback writes the collected values (never more than the buffer's size) to the
-/// buffer glFeedbackBuffer gave.
+/// buffer glFeedbackBuffer gave; ending selection writes the hit records (never more than the
+/// buffer's size) to the buffer glSelectBuffer gave.
 #[unsafe(no_mangle)]
 pub extern "C" fn glRenderMode(mode: GLenum) -> GLint {
     with_context(|ctx| {
         let (count, finished) = ctx.render_mode(mode)?;
+        if let Some(finished) = &finished {
+            // SAFETY: glSelectBuffer's contract (the records are empty after feedback).
+            unsafe { super::select::write_hit_records(finished) };
+        }
         if let Some(finished) = finished.filter(|f| f.address != 0 && !f.values.is_empty()) {
             let buffer = finished.address as *mut GLfloat;
             // SAFETY: glFeedbackBuffer's contract: room for `size` floats, and the context

@@ -283,6 +283,7 @@ impl Context {
         match ArrayKind::of_pointer_name(pname) {
             Some(kind) => Ok(self.arrays.get(kind).address),
             None if pname == GL_FEEDBACK_BUFFER_POINTER => Ok(self.feedback_address),
+            None if pname == GL_SELECTION_BUFFER_POINTER => Ok(self.selection.address),
             None => Err(GlError::InvalidEnum),
         }
     }

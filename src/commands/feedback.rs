@@ -1,4 +1,5 @@
-//! Viewport, depth range, glFeedbackBuffer, glRenderMode and glPassThrough (§2.11.1, §5.3).
+//! Viewport, depth range, glFeedbackBuffer, glRenderMode and glPassThrough (§2.11.1, §5.2,
+//! §5.3).
 
 use crate::context::{Context, RenderMode};
 use crate::error::{GlError, GlResult};
@@ -6,12 +7,15 @@ use crate::gl::*;
 use crate::pipeline::feedback::FeedbackLayout;
 use crate::state::raster::MAX_VIEWPORT_DIMS;
 
-/// What glRenderMode hands the C layer when feedback ends: the values to write to the
-/// address glFeedbackBuffer was given.
+/// What glRenderMode hands the C layer when feedback or selection ends: the values to write
+/// to the address glFeedbackBuffer or glSelectBuffer was given.
 #[derive(Debug, Default, PartialEq)]
 pub struct FinishedFeedback {
     pub address: usize,
+    /// Feedback: the values fed back.
     pub values: Vec<f32>,
+    /// Selection: the hit records (`values` is then empty).
+    pub hit_records: Vec<u32>,
 }
 
 impl Context {
@@ -55,19 +59,22 @@ impl Context {
         Ok(())
     }
 
-    /// glRenderMode: returns the value count of the feedback that ends (-1 if it overflowed)
-    /// and the values for the C layer to write, or 0 when leaving GL_RENDER.
+    /// glRenderMode: returns the value count of the feedback that ends or the hit count of
+    /// the selection that ends (-1 if either overflowed) and the values for the C layer to
+    /// write, or 0 when leaving GL_RENDER. A call in error changes nothing (§2.5): the mode
+    /// is checked before the one that ends is touched.
     pub fn render_mode(&mut self, mode: GLenum) -> GlResult<(i32, Option<FinishedFeedback>)> {
         self.outside_begin_end()?;
         let new_mode = match mode {
             GL_RENDER => RenderMode::Render,
             GL_FEEDBACK => RenderMode::Feedback,
-            // Selection needs glSelectBuffer, which fflight does not have (as Mesa without
-            // a selection buffer).
-            GL_SELECT => return Err(GlError::InvalidOperation),
+            GL_SELECT => RenderMode::Select,
             _ => return Err(GlError::InvalidEnum),
         };
         if new_mode == RenderMode::Feedback && self.feedback.layout.is_none() {
+            return Err(GlError::InvalidOperation);
+        }
+        if new_mode == RenderMode::Select && !self.selection.buffer_given {
             return Err(GlError::InvalidOperation);
         }
         let finished = match self.render_mode {
@@ -77,7 +84,29 @@ impl Context {
                 let values = std::mem::take(&mut self.feedback.values);
                 self.feedback.restart();
                 let address = self.feedback_address;
-                (count, Some(FinishedFeedback { address, values }))
+                (
+                    count,
+                    Some(FinishedFeedback {
+                        address,
+                        values,
+                        ..Default::default()
+                    }),
+                )
+            }
+            RenderMode::Select => {
+                self.selection.write_hit_record();
+                let count = self.selection.result();
+                let hit_records = std::mem::take(&mut self.selection.records);
+                self.selection.restart();
+                let address = self.selection.address;
+                (
+                    count,
+                    Some(FinishedFeedback {
+                        address,
+                        hit_records,
+                        ..Default::default()
+                    }),
+                )
             }
         };
         self.render_mode = new_mode;

@@ -7,4 +7,5 @@ pub mod lighting;
 pub mod matrix;
 pub mod query;
 pub mod raster;
+pub mod select;
 pub mod vertex;

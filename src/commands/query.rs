@@ -5,6 +5,7 @@ use std::ffi::CStr;
 use crate::context::{Context, RenderMode};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
+use crate::pipeline::select::MAX_NAME_STACK_DEPTH;
 use crate::state::arrays::ArrayKind;
 use crate::state::convert::{float_to_int, normalized_to_int};
 use crate::state::enables::{Capability, MAX_CLIP_PLANES};
@@ -139,7 +140,11 @@ impl Context {
             GL_RENDER_MODE => enumeration(match self.render_mode {
                 RenderMode::Render => GL_RENDER,
                 RenderMode::Feedback => GL_FEEDBACK,
+                RenderMode::Select => GL_SELECT,
             }),
+            GL_SELECTION_BUFFER_SIZE => int(self.selection.capacity as i32),
+            GL_NAME_STACK_DEPTH => int(self.selection.names.len() as i32),
+            GL_MAX_NAME_STACK_DEPTH => int(MAX_NAME_STACK_DEPTH as i32),
             GL_FEEDBACK_BUFFER_SIZE => int(self.feedback.capacity as i32),
             GL_FEEDBACK_BUFFER_TYPE => {
                 enumeration(self.feedback.layout.map_or(GL_2D, |layout| layout.kind))

@@ -1,10 +1,14 @@
 //! The vertex pipeline after lighting: primitive assembly, clipping, facing, flat shading,
-//! polygon mode and feedback (§2.6, §2.12, §2.14.1, §2.14.7, §3.5, §5.3).
+//! polygon mode and feedback or selection (§2.6, §2.12, §2.14.1, §2.14.7, §3.5, §5.2, §5.3).
+//!
+//! One path, two sinks: the primitives that survive clipping and culling are fed back in
+//! GL_FEEDBACK mode and recorded as selection hits in GL_SELECT mode.
 
 pub mod assembly;
 pub mod capture;
 pub mod clip;
 pub mod feedback;
+pub mod select;
 pub mod vertex;
 
 use glam::Vec4;
@@ -44,10 +48,14 @@ impl Context {
         self.raster.shade_model == GL_FLAT
     }
 
+    fn selecting(&self) -> bool {
+        self.render_mode == RenderMode::Select
+    }
+
     /// Assembles the primitives of `mode` from processed vertices and sends them on (§2.6.1).
     pub(crate) fn draw_vertices(&mut self, mode: GLenum, vertices: &[ProcessedVertex]) {
         self.capture.record(mode, vertices);
-        if self.render_mode != RenderMode::Feedback {
+        if self.render_mode == RenderMode::Render {
             return;
         }
         let planes = self.clip_planes();
@@ -81,16 +89,21 @@ impl Context {
 
     /// A point: culled unless inside every plane; points always use the front colors.
     fn feedback_point(&mut self, planes: &ClipPlanes, v: &ProcessedVertex) {
-        if point_visible(planes, v) {
-            let fed = feedback_vertex(self, v, v.colors.front.primary);
-            self.feedback.token(GL_POINT_TOKEN);
-            self.feedback.vertex(&fed);
+        if !point_visible(planes, v) {
+            return;
         }
+        if self.selecting() {
+            self.selection.hit(self.raster.window(v.clip).z);
+            return;
+        }
+        let fed = feedback_vertex(self, v, v.colors.front.primary);
+        self.feedback.token(GL_POINT_TOKEN);
+        self.feedback.vertex(&fed);
     }
 
     /// A segment, clipped; flat shading gives both ends the provoking (second) vertex's color.
     fn feedback_line(&mut self, planes: &ClipPlanes, ends: [&ProcessedVertex; 2], reset: bool) {
-        if reset {
+        if reset && !self.selecting() {
             // The counter restarts even if this segment is clipped away: it advances only
             // with the fragments of a drawn segment (§3.4.2).
             self.feedback.reset_line_stipple();
@@ -98,6 +111,12 @@ impl Context {
         let Some(clipped) = clip_line(planes, ends[0], ends[1]) else {
             return;
         };
+        if self.selecting() {
+            for v in &clipped {
+                self.selection.hit(self.raster.window(v.clip).z);
+            }
+            return;
+        }
         let flat = self.flat_shading().then_some(ends[1].colors.front.primary);
         let fed =
             clipped.map(|v| feedback_vertex(self, &v, flat.unwrap_or(v.colors.front.primary)));
@@ -122,7 +141,9 @@ impl Context {
     }
 
     /// One triangle: faced, culled, colored, then drawn in its face's polygon mode. `reset`
-    /// restarts the line stipple of its outline.
+    /// restarts the line stipple of its outline. In selection mode a triangle that is not
+    /// culled hits with all its corners, whatever the polygon mode and edge flags (§5.2:
+    /// "selection is based on the polygon itself, regardless of the setting of PolygonMode").
     fn feedback_triangle(
         &mut self,
         corners: [&ProcessedVertex; 3],
@@ -133,6 +154,12 @@ impl Context {
         let window = corners.map(|v| self.raster.window(v.clip));
         let front = self.is_front_facing(window);
         if self.enables.cull_face && self.culls(front) {
+            return;
+        }
+        if self.selecting() {
+            for w in &window {
+                self.selection.hit(w.z);
+            }
             return;
         }
         let face_colors = |v: &ProcessedVertex| -> FaceColors {
