@@ -30,6 +30,9 @@
  *     segment comes from a line primitive and the spec gives it the token
  *     <kind> (line_reset or line); the fflight build must have fed back
  *     exactly that (ffl_print_feedback_prims prints these marks).
+ *   - Numbers labelled zhit are the depths of selection hit records, unsigned
+ *     integers (z in [0, 1] scaled by 2^32 - 1): compared within 1e-5 of depth
+ *     (HIT_DEPTH_TOLERANCE in tests/c_programs.rs), like window z.
  *   - A line `osmesa-known: <name>` in a program's header comment declares a
  *     known OSMesa-vs-spec difference the comparison accepts under a narrow
  *     rule. The only one is `line-reset`: fflight's `line_reset` where
@@ -409,6 +412,36 @@ static inline int ffl_fb_finish(ffl_fb *fb, const char *tag, ffl_vertex_note not
         return 1;
     return ffl_print_feedback_prims(tag, fb->buf, n, fb->type, fb->modes, fb->nprims, note,
                                     user, &fb->counts);
+}
+
+/* ---- selection ------------------------------------------------------------ */
+
+/* Prints the hit records of a selection pass that returned `hits` (glRenderMode's
+ * value), one line per record: "<prefix> hit names <k> zhit <min> <max> stack
+ * <names...>". The depths are the unsigned integers of the record (z scaled by
+ * 2^32 - 1); the harness compares numbers labelled zhit within 1e-5 of depth.
+ * After an overflow (-1) the `size` values written are printed the same way, the
+ * last record cut short where the buffer ends ("cut"). Returns 0 if the records
+ * parsed cleanly. */
+static inline int ffl_print_hits(const char *prefix, const GLuint *buf, GLint hits, GLsizei size)
+{
+    GLint h, i = 0;
+    printf("%s hits %d\n", prefix, (int)hits);
+    for (h = 0; hits < 0 ? i < size : h < hits; h++) {
+        GLuint k, names = buf[i++];
+        printf("%s hit names %u zhit", prefix, names);
+        for (k = 0; k < 2 && i < size; k++)
+            printf(" %u", buf[i++]);
+        printf(" stack");
+        for (k = 0; k < names && i < size; k++)
+            printf(" %u", buf[i++]);
+        if (k < names || i > size) {
+            printf(" cut\n");
+            return hits >= 0;
+        }
+        printf("\n");
+    }
+    return 0;
 }
 
 /* ---- deterministic pseudo-random numbers (splitmix64) ------------------- */

@@ -80,6 +80,17 @@ const XY_TOLERANCE_FLOOR: f64 = 6.4e-5;
 /// 5e-4 pixels, or the ordinary relative tolerance where that is larger.
 const CLIP_MADE_COORDINATE_TOLERANCE: f64 = 5e-4;
 
+/// Depths in selection hit records (label `zhit`): unsigned integers, window z
+/// in [0, 1] scaled by 2^32 - 1 (§5.2). Compared as window z is (1e-5 of
+/// depth), so the tolerance is 1e-5 * (2^32 - 1) integer steps. Mesa converts
+/// with a float product truncated, fflight rounds the exact product: they
+/// differ by a few hundred steps (float32 resolution of z * 2^32) where both
+/// are right; one unit of depth is 4294967295 steps, so a wrong depth shows.
+const HIT_DEPTH_TOLERANCE: f64 = 1e-5 * 4294967295.0;
+
+/// The label of hit-record depths.
+const HIT_DEPTH_LABEL: &str = "zhit";
+
 /// The mark of a fed-back vertex that no glVertex gave: clipping made it.
 const CLIP_MADE: &str = "clip-made";
 
@@ -95,7 +106,9 @@ fn is_coordinate_label(label: &str) -> bool {
 /// OSMesa evaluates in float32. fflight evaluates in double from the stored
 /// state, and is held to COLOR_TOLERANCE against the reference everywhere.
 fn tolerance(label: &str, component: usize, a: f64, b: f64, line_tolerance: Option<f64>) -> f64 {
-    if is_coordinate_label(label) {
+    if label == HIT_DEPTH_LABEL {
+        HIT_DEPTH_TOLERANCE
+    } else if is_coordinate_label(label) {
         coordinate_tolerance(component, a.abs().max(b.abs()))
     } else {
         COLOR_TOLERANCE.max(line_tolerance.unwrap_or(0.0))
@@ -892,6 +905,10 @@ c_programs!(
     feedback_types_polygons,
     feedback_overflow_polygons,
     clip_line_strip_reset,
+    select_primitives,
+    select_overflow,
+    select_errors,
+    select_osmesa_diff,
 );
 
 /// The line-reset rule accepts exactly fflight `line_reset` vs OSMesa `line`
@@ -1037,6 +1054,42 @@ fn comparison_catches_differences() {
         &mut stats,
     );
     assert_eq!(report.failures.len(), 2);
+
+    // Hit-record depths: 1e-5 of depth in integer steps, nothing else widened.
+    let hit = "p hit names 1 zhit 2147483648 4294967295 stack 7\n";
+    let mut report = Report::new("self-test");
+    check_differential(
+        &mut report,
+        &hit.replace("2147483648", "2147526000"),
+        hit,
+        &mut stats,
+    );
+    assert!(report.failures.is_empty(), "{:?}", report.failures);
+    check_differential(
+        &mut report,
+        &hit.replace(" 4294967295", " 0"),
+        hit,
+        &mut stats,
+    );
+    check_differential(
+        &mut report,
+        &hit.replace("2147483648", "2147527000"),
+        hit,
+        &mut stats,
+    );
+    check_differential(
+        &mut report,
+        &hit.replace("stack 7", "stack 8"),
+        hit,
+        &mut stats,
+    );
+    check_differential(
+        &mut report,
+        &hit.replace("names 1", "names 2"),
+        hit,
+        &mut stats,
+    );
+    assert_eq!(report.failures.len(), 4, "{:?}", report.failures);
 
     let mut report = Report::new("self-test");
     check_differential(&mut report, &base.replace("rgba", "rgb"), base, &mut stats);
