@@ -121,6 +121,12 @@ impl Context {
         }
     }
 
+    /// Whether drawn vertices reach anything: feedback, selection or capture. In GL_RENDER
+    /// mode without capture there is no rasterizer to feed, so vertices are not processed.
+    pub(crate) fn vertices_observed(&self) -> bool {
+        self.render_mode != RenderMode::Render || self.capture.is_active()
+    }
+
     /// Marks every derived constant stale (a state change that affects vertices).
     pub(crate) fn invalidate(&mut self) {
         self.derived = None;

@@ -418,7 +418,7 @@ impl Context {
             }
         }
         let arrays = self.arrays;
-        if !arrays.get(ArrayKind::Vertex).enabled {
+        if !arrays.get(ArrayKind::Vertex).enabled || !self.vertices_observed() {
             return Ok(());
         }
         let Some((first, last)) = indices.range() else {

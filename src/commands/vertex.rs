@@ -53,7 +53,7 @@ impl Context {
     /// glVertex: the vertex is transformed and lit with the current attributes now. Outside
     /// glBegin/glEnd it has no effect (§2.6.3 leaves it undefined).
     pub fn vertex(&mut self, object: Vec4) {
-        if self.primitive.is_none() {
+        if self.primitive.is_none() || !self.vertices_observed() {
             return;
         }
         let attribs = self.current;
