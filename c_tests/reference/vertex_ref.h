@@ -218,4 +218,82 @@ static inline void vref_draw_shape(vref_set *s, ffl_fb *fb, ffl_rng *r, GLenum m
     glEnd();
 }
 
+/* The lit pass of the primitive programs (prim_*.c): a directional LIGHT0
+ * with default colors, a positional LIGHT1 (dim diffuse, specular, linear
+ * attenuation), a specular material of shininess 20 on both faces and color
+ * material. Lighting itself is left to the caller. */
+static inline void vref_standard_lights(ref_state *ref)
+{
+    mirror_light4f(ref, GL_LIGHT0, GL_POSITION, 1, 2, 3, 0);
+    mirror_light4f(ref, GL_LIGHT1, GL_POSITION, -3, 1, 6, 1);
+    mirror_light4f(ref, GL_LIGHT1, GL_DIFFUSE, 0.4f, 0.3f, 0.2f, 1);
+    mirror_light4f(ref, GL_LIGHT1, GL_SPECULAR, 0.5f, 0.5f, 0.5f, 1);
+    mirror_lightf(ref, GL_LIGHT1, GL_LINEAR_ATTENUATION, 0.05f);
+    mirror_material4f(ref, GL_FRONT_AND_BACK, GL_SPECULAR, 0.6f, 0.6f, 0.6f, 1);
+    mirror_materialf(ref, GL_FRONT_AND_BACK, GL_SHININESS, 20);
+    mirror_enable(ref, GL_LIGHT0, 1);
+    mirror_enable(ref, GL_LIGHT1, 1);
+    mirror_enable(ref, GL_COLOR_MATERIAL, 1);
+}
+
+#define VREF_PASS_BUFFER_SIZE 8192
+
+/* One feedback pass (GL_3D_COLOR) named `tag`: prints "<tag> stored_state"
+ * and the reference's deviation from the state GL stored, then, with the
+ * PRNG seeded with `seed`, draws for each of the `mode_count` modes one
+ * random shape (vref_draw_shape, centred, size 9, depth 5) of each count
+ * 0..max_count, and prints the feedback with the reference's values.
+ * Returns nonzero on a feedback failure. */
+static inline int vref_pass_modes(vref_set *s, const char *tag, ref_state *ref,
+                                  const GLenum *modes, int mode_count, int max_count,
+                                  uint64_t seed)
+{
+    static GLfloat buf[VREF_PASS_BUFFER_SIZE];
+    ffl_fb fb;
+    ffl_rng r;
+    int m, count;
+    ffl_rng_seed(&r, seed);
+    ffl_fb_init(&fb);
+    printf("%s stored_state", tag);
+    mirror_print_deviation(mirror_read_stored_state(ref));
+    printf("\n");
+    vref_start(s, ref);
+    ffl_fb_start(&fb, buf, VREF_PASS_BUFFER_SIZE, GL_3D_COLOR);
+    for (m = 0; m < mode_count; m++)
+        for (count = 0; count <= max_count; count++)
+            vref_draw_shape(s, &fb, &r, modes[m], count, 0, 0, 9, 5);
+    return ffl_fb_finish(&fb, tag, vref_note, s);
+}
+
+/* The whole main of a primitive program: a 64x64 viewport, glOrtho of
+ * +-10 on every axis, the modelview rotated by 25 degrees about
+ * (0.3, 0.2, 1), an "unlit" pass, then a "lit" pass with
+ * vref_standard_lights, each vref_pass_modes(modes, mode_count, max_count,
+ * seed) (the same seed for both), then the vertex counts. Returns the exit
+ * status: nonzero if a pass failed. */
+static inline int vref_run_primitive_program(const GLenum *modes, int mode_count, int max_count,
+                                             uint64_t seed)
+{
+    static vref_set vref;
+    ref_state ref;
+    int failed = 0;
+
+    ffl_test_init();
+    ref_init(&ref);
+    glViewport(0, 0, 64, 64);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(-10, 10, -10, 10, -10, 10);
+    glMatrixMode(GL_MODELVIEW);
+    mirror_load_identity(&ref);
+    mirror_rotatef(&ref, 25, 0.3f, 0.2f, 1);
+
+    failed |= vref_pass_modes(&vref, "unlit", &ref, modes, mode_count, max_count, seed);
+    vref_standard_lights(&ref);
+    mirror_enable(&ref, GL_LIGHTING, 1);
+    failed |= vref_pass_modes(&vref, "lit", &ref, modes, mode_count, max_count, seed);
+    vref_print_counts(&vref);
+    return failed;
+}
+
 #endif /* FFL_VERTEX_REF_H */
