@@ -7,11 +7,17 @@
 //!   oracle); after every call that returns `Err`, everything the queries report (every glGet
 //!   pname, every light and material parameter, clip planes, array pointers, the whole of each
 //!   matrix stack, capture and the feedback buffer, with the primitive in progress ended on a
-//!   copy) is what it was before; the error flag keeps the first error until read. Fed-back,
-//!   captured and bulk-lit colors stay in [0, 1] whatever the inputs (NaN and infinities
-//!   included), and feedback streams parse.
-//! - Through the C entry points: NULL pointers and wrong enums, inside and outside
-//!   glBegin/glEnd, set an error and change nothing.
+//!   copy, and in selection mode the name stack, shown by a hit made on a copy, and the hit
+//!   records) is what it was before; the error flag keeps the first error until read. Mode
+//!   and name-stack commands (§5.2, §5.3) must end exactly as GL says (GL_STACK_OVERFLOW at
+//!   depth 64, GL_STACK_UNDERFLOW, glLoadName on an empty stack, ignored outside selection
+//!   mode), and hit records must be well formed (n, min z <= max z, n names of a stack the
+//!   selection had; -1 exactly when the buffer overflowed). Fed-back, captured and bulk-lit
+//!   colors stay in [0, 1] whatever the inputs (NaN and infinities included), and feedback
+//!   streams parse.
+//! - Through the C entry points: NULL pointers and wrong enums (glSelectBuffer with NULL or a
+//!   negative size, name-stack errors), inside and outside glBegin/glEnd, set an error and
+//!   change nothing; hit records written through glSelectBuffer's pointer are well formed.
 //!
 //! Each sequence has a fixed seed (printed on failure with the call that failed and the calls
 //! before it), so a failure reproduces with `sequence(seed)`.
@@ -628,6 +634,14 @@ enum Op {
         address: usize,
     },
     RenderMode(GLenum),
+    SelectBuffer {
+        size: i32,
+        address: usize,
+    },
+    InitNames,
+    PushName(u32),
+    PopName,
+    LoadName(u32),
     PassThrough(f32),
     Viewport([i32; 4]),
     DepthRange([f64; 2]),
@@ -832,7 +846,8 @@ impl Op {
                 kind,
                 address,
             } => size < 0 || !valid(kind, &FEEDBACK_TYPES) || (address == 0 && size > 0),
-            Op::RenderMode(mode) => !valid(mode, &[GL_RENDER, GL_FEEDBACK]),
+            Op::RenderMode(mode) => !valid(mode, &RENDER_MODES),
+            Op::SelectBuffer { size, address } => size < 0 || (address == 0 && size > 0),
             Op::Viewport([_, _, w, h]) => w < 0 || h < 0,
             Op::ClipPlane { plane, .. } | Op::GetClipPlane(plane) => !valid(plane, &CLIP_PLANES),
             Op::ShadeModel(mode) => !valid(mode, &SHADE_MODELS),
@@ -992,7 +1007,7 @@ impl ArrayBytes {
 /// Any command, arguments half valid, half not.
 fn any_op(rng: &mut Rng, finite: bool) -> Op {
     let f = finite;
-    match rng.below(80) {
+    match rng.below(88) {
         0..=2 => Op::Light {
             light: rng.enumeration(&LIGHTS),
             pname: rng.enumeration(&LIGHT_PNAMES),
@@ -1173,7 +1188,37 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
             2 => Op::GetString(rng.enumeration(&STRING_NAMES)),
             _ => Op::GetPointer(rng.enumeration(&POINTER_PNAMES)),
         },
-        _ => Op::GetError,
+        76..=79 => Op::GetError,
+        80 => select_buffer(rng),
+        81 => Op::RenderMode(GL_SELECT),
+        _ => name_op(rng),
+    }
+}
+
+/// glSelectBuffer: sizes negative, zero, small (overflow likely), large; sometimes NULL.
+fn select_buffer(rng: &mut Rng) -> Op {
+    Op::SelectBuffer {
+        size: match rng.below(6) {
+            0 => rng.pick(&[-1, -64, i32::MIN, 0, i32::MAX]),
+            1 | 2 => rng.below(12) as i32,
+            _ => rng.below(400) as i32,
+        },
+        address: if rng.one_in(6) { 0 } else { 0x3000 },
+    }
+}
+
+/// A name-stack command: names include 0 and the largest.
+fn name_op(rng: &mut Rng) -> Op {
+    let name = if rng.one_in(4) {
+        rng.pick(&[0, u32::MAX])
+    } else {
+        rng.below(1000) as u32
+    };
+    match rng.below(8) {
+        0 => Op::InitNames,
+        1..=3 => Op::PushName(name),
+        4 | 5 => Op::PopName,
+        _ => Op::LoadName(name),
     }
 }
 
@@ -1238,8 +1283,17 @@ fn light_vertices(rng: &mut Rng, finite: bool) -> Op {
 
 /// The next command: between glBegin and glEnd mostly vertices and what may come between
 /// them, sometimes anything (GL_INVALID_OPERATION for most).
-fn next_op(rng: &mut Rng, inside_begin_end: bool, finite: bool) -> Op {
+fn next_op(rng: &mut Rng, inside_begin_end: bool, selecting: bool, finite: bool) -> Op {
     if !inside_begin_end {
+        // In selection mode, enough name-stack commands to fill the stack now and then, and
+        // rectangles that hit under identity matrices.
+        if selecting && rng.one_in(3) {
+            return match rng.below(8) {
+                0..=3 => Op::PushName(rng.below(1000) as u32),
+                4 | 5 => name_op(rng),
+                _ => Op::Rect(std::array::from_fn(|_| rng.uniform(-1.5, 1.5) as f32)),
+            };
+        }
         return any_op(rng, finite);
     }
     match rng.below(100) {
@@ -1262,6 +1316,7 @@ fn next_op(rng: &mut Rng, inside_begin_end: bool, finite: bool) -> Op {
             base: Base::random(rng),
         },
         68..=75 => Op::End,
+        76 => name_op(rng),
         _ => any_op(rng, finite),
     }
 }
@@ -1282,7 +1337,14 @@ fn clamped(color: Vec4) -> bool {
 
 /// Runs `op`. Invariants of a successful call (feedback streams, lit colors) are checked here;
 /// the unchanged state of a failed one by the caller.
-fn apply(ctx: &mut Context, op: &Op, arrays: &ArrayBytes) -> (GlResult, Check) {
+/// `names_seen`: every name stack the selection in progress has had (hit records hold one).
+fn apply(
+    ctx: &mut Context,
+    op: &Op,
+    arrays: &ArrayBytes,
+    names_seen: &[Vec<u32>],
+    stats: &mut Stats,
+) -> (GlResult, Check) {
     let mut check = Ok(());
     let result = match op {
         Op::Light {
@@ -1358,16 +1420,53 @@ fn apply(ctx: &mut Context, op: &Op, arrays: &ArrayBytes) -> (GlResult, Check) {
             address,
         } => ctx.feedback_buffer(*size, *kind, *address),
         Op::RenderMode(mode) => {
-            let layout = ctx
-                .get(GL_FEEDBACK_BUFFER_TYPE)
-                .map(|v| v.as_ints()[0] as GLenum);
-            let capacity = ctx.get(GL_FEEDBACK_BUFFER_SIZE).map(|v| v.as_ints()[0]);
+            let int = |ctx: &Context, pname| ctx.get(pname).map(|v| v.as_ints()[0]);
+            let left = int(ctx, GL_RENDER_MODE).map(|m| m as GLenum);
+            let layout = int(ctx, GL_FEEDBACK_BUFFER_TYPE).map(|t| t as GLenum);
+            let capacity = int(ctx, GL_FEEDBACK_BUFFER_SIZE);
+            let select_capacity = int(ctx, GL_SELECTION_BUFFER_SIZE);
             ctx.render_mode(*mode).map(|(count, finished)| {
-                if let (Some(finished), Ok(kind), Ok(capacity)) = (finished, layout, capacity) {
-                    check = check_feedback(&finished.values, count, capacity, kind);
-                }
+                check = match (left, finished) {
+                    (Ok(GL_SELECT), Some(finished)) => {
+                        stats.selections += 1;
+                        stats.hits += count.max(0) as usize;
+                        stats.overflows += (count == -1) as usize;
+                        let capacity = select_capacity.unwrap_or(-2) as usize;
+                        let records = &finished.hit_records;
+                        if !finished.values.is_empty() {
+                            Err("selection ended with feedback values".into())
+                        } else if records.len() > capacity
+                            || (count == -1 && records.len() != capacity)
+                        {
+                            Err(format!(
+                                "selection: {} values, count {count}, capacity {capacity}",
+                                records.len()
+                            ))
+                        } else {
+                            check_hit_records(records, count, true, Some(names_seen))
+                        }
+                    }
+                    (Ok(GL_SELECT), None) => Err("selection ended with no records".into()),
+                    (_, Some(finished)) if !finished.hit_records.is_empty() => {
+                        Err("feedback ended with hit records".into())
+                    }
+                    (Ok(GL_FEEDBACK), Some(finished)) => match (layout, capacity) {
+                        (Ok(kind), Ok(capacity)) => {
+                            check_feedback(&finished.values, count, capacity, kind)
+                        }
+                        _ => Err("feedback: no layout".into()),
+                    },
+                    (_, Some(_)) => Err("GL_RENDER ended with values".into()),
+                    (_, None) if count != 0 => Err(format!("GL_RENDER ended with {count}")),
+                    _ => Ok(()),
+                };
             })
         }
+        Op::SelectBuffer { size, address } => ctx.select_buffer(*size, *address),
+        Op::InitNames => ctx.init_names(),
+        Op::PushName(name) => ctx.push_name(*name),
+        Op::PopName => ctx.pop_name(),
+        Op::LoadName(name) => ctx.load_name(*name),
         Op::PassThrough(v) => ctx.pass_through(*v),
         Op::Viewport([x, y, w, h]) => ctx.viewport(*x, *y, *w, *h),
         Op::DepthRange([n, f]) => ctx.depth_range(*n, *f),
@@ -1607,6 +1706,57 @@ fn check_feedback(values: &[f32], count: i32, capacity: i32, kind: GLenum) -> Ch
     Ok(())
 }
 
+/// Checks hit records (§5.2): each is a name count n (at most GL_MAX_NAME_STACK_DEPTH), the
+/// minimum and maximum depth (min <= max), then n names, a name stack of `names_seen` when
+/// given. A count of -1 (overflow) allows the last record to be cut short; otherwise exactly
+/// `count` whole records, and with `complete` nothing after them.
+fn check_hit_records(
+    records: &[u32],
+    count: i32,
+    complete: bool,
+    names_seen: Option<&[Vec<u32>]>,
+) -> Check {
+    if count < -1 {
+        return Err(format!("selection: count {count}"));
+    }
+    let (mut i, mut parsed) = (0, 0);
+    while i < records.len() && (count == -1 || parsed < count) {
+        let n = records[i] as usize;
+        if n > 64 {
+            return Err(format!(
+                "selection: {n} names in the record at {i}: {records:?}"
+            ));
+        }
+        let Some(record) = records.get(i..i + 3 + n) else {
+            return match count {
+                -1 => Ok(()),
+                _ => Err(format!("selection: record cut at {i} without overflow")),
+            };
+        };
+        if record[1] > record[2] {
+            return Err(format!("selection: min z > max z at {i}: {record:?}"));
+        }
+        let names = &record[3..];
+        if names_seen.is_some_and(|seen| !seen.iter().any(|s| s == names)) {
+            return Err(format!(
+                "selection: names {names:?} at {i} never on the stack"
+            ));
+        }
+        i += 3 + n;
+        parsed += 1;
+    }
+    if count >= 0 && parsed != count {
+        return Err(format!("selection: count {count}, {parsed} records"));
+    }
+    if complete && count >= 0 && i != records.len() {
+        return Err(format!(
+            "selection: {} values after {count} records",
+            records.len() - i
+        ));
+    }
+    Ok(())
+}
+
 // ---- what the queries report ----
 
 /// Which query a snapshot entry came from.
@@ -1620,6 +1770,8 @@ enum Key {
     Pointer(GLenum),
     Capture,
     Feedback,
+    Selection,
+    NameStack,
     MatrixStack(GLenum, usize),
 }
 
@@ -1728,15 +1880,42 @@ impl Snapshot {
             captured.extend(p.edges.map(|e| e as u64));
         }
         s.push(Key::Capture, captured);
-        // Leaving feedback mode hands over what the buffer holds (the copy's, not ctx's).
+        // In selection mode, the name stack shows in the record of a hit made on purpose.
+        if c.get(GL_RENDER_MODE).expect("the render mode").as_ints()[0] == GL_SELECT as i32 {
+            let mut probe = c.clone();
+            for mode in [GL_PROJECTION, GL_MODELVIEW] {
+                probe.matrix_mode(mode).expect("a matrix mode");
+                probe.load_identity().expect("glLoadIdentity");
+            }
+            for plane in CLIP_PLANES {
+                probe.set_capability(plane, false).expect("a clip plane");
+            }
+            probe.begin(GL_POINTS).expect("glBegin");
+            probe.vertex(Vec4::new(0.0, 0.0, 0.0, 1.0));
+            probe.end().expect("glEnd");
+            let (_, finished) = probe.render_mode(GL_RENDER).expect("leaving selection");
+            let records = finished.map(|f| f.hit_records).unwrap_or_default();
+            // The last record's names (that of the probe's hit, unless the buffer is full).
+            let depth = c.get(GL_NAME_STACK_DEPTH).expect("a depth").as_ints()[0] as usize;
+            let names = records.len().saturating_sub(depth)..;
+            s.push(
+                Key::NameStack,
+                [depth as u64]
+                    .into_iter()
+                    .chain(records[names].iter().map(|&v| v as u64)),
+            );
+        }
+        // Leaving feedback or selection mode hands over what the buffer holds (the copy's).
         let (count, finished) = c.render_mode(GL_RENDER).expect("glRenderMode(GL_RENDER)");
-        let values = finished.map(|f| f.values).unwrap_or_default();
+        let finished = finished.unwrap_or_default();
+        let (values, records) = (finished.values, finished.hit_records);
         s.push(
             Key::Feedback,
             [count as u64, values.len() as u64]
                 .into_iter()
                 .chain(values.iter().map(|v| v.to_bits() as u64)),
         );
+        s.push(Key::Selection, records.iter().map(|&v| v as u64));
         for mode in MATRIX_MODES {
             c.matrix_mode(mode).expect("a matrix mode");
             let pname = match mode {
@@ -1777,12 +1956,88 @@ impl Snapshot {
 
 // ---- the Rust sequences ----
 
+/// What the sequences did, for the checks that they exercise what they should.
+#[derive(Default, Debug)]
+struct Stats {
+    calls: usize,
+    failed: usize,
+    /// Selections ended, the hit records they returned, those that overflowed.
+    selections: usize,
+    hits: usize,
+    overflows: usize,
+    /// GL_STACK_OVERFLOW and GL_STACK_UNDERFLOW from glPushName and glPopName.
+    name_overflows: usize,
+    name_underflows: usize,
+}
+
+/// What a sequence knows of the render modes and the name stack, from the calls that
+/// succeeded: enough to say exactly how a mode or name-stack command must end (§5.2, §5.3).
+#[derive(Default)]
+struct Modes {
+    feedback_buffer: bool,
+    select_buffer: bool,
+    selecting: bool,
+    names: Vec<u32>,
+    /// Every name stack of the selection in progress, for its hit records.
+    names_seen: Vec<Vec<u32>>,
+}
+
+impl Modes {
+    /// The result `op` must have, outside glBegin/glEnd, if it is a mode or name-stack
+    /// command.
+    fn expected(&self, op: &Op) -> Option<GlResult> {
+        let depth = self.names.len();
+        Some(match *op {
+            Op::RenderMode(GL_FEEDBACK) if !self.feedback_buffer => Err(GlError::InvalidOperation),
+            Op::RenderMode(GL_SELECT) if !self.select_buffer => Err(GlError::InvalidOperation),
+            Op::RenderMode(mode) if !RENDER_MODES.contains(&mode) => Err(GlError::InvalidEnum),
+            Op::RenderMode(_) | Op::InitNames => Ok(()),
+            Op::SelectBuffer { size, .. } if size < 0 => Err(GlError::InvalidValue),
+            Op::SelectBuffer { .. } if self.selecting => Err(GlError::InvalidOperation),
+            Op::SelectBuffer { size, address } if size > 0 && address == 0 => {
+                Err(GlError::InvalidValue)
+            }
+            Op::SelectBuffer { .. } => Ok(()),
+            _ if !matches!(op, Op::PushName(_) | Op::PopName | Op::LoadName(_)) => return None,
+            _ if !self.selecting => Ok(()),
+            Op::PushName(_) if depth >= 64 => Err(GlError::StackOverflow),
+            Op::PopName if depth == 0 => Err(GlError::StackUnderflow),
+            Op::LoadName(_) if depth == 0 => Err(GlError::InvalidOperation),
+            _ => Ok(()),
+        })
+    }
+
+    /// Follows a call that succeeded.
+    fn succeeded(&mut self, op: &Op) {
+        match *op {
+            Op::FeedbackBuffer { .. } => self.feedback_buffer = true,
+            Op::SelectBuffer { .. } => self.select_buffer = true,
+            Op::RenderMode(mode) => {
+                self.selecting = mode == GL_SELECT;
+                self.names.clear();
+                self.names_seen = vec![Vec::new()];
+            }
+            _ if !self.selecting => {}
+            Op::InitNames => self.names.clear(),
+            Op::PushName(name) => self.names.push(name),
+            Op::PopName => {
+                self.names.pop();
+            }
+            Op::LoadName(name) => *self.names.last_mut().expect("a name") = name,
+            _ => return,
+        }
+        if self.selecting && !self.names_seen.contains(&self.names) {
+            self.names_seen.push(self.names.clone());
+        }
+    }
+}
+
 /// One random sequence of `seed`: panics with the seed, the failing call and the calls before
 /// it when a call panics, a failed call changes what the queries report, the error flag is
 /// wrong, or a fed-back, captured or lit color leaves [0, 1]. A third of the sequences feed
 /// NaN and infinities, the others only finite values (so that lit colors mean something).
-/// Returns how many calls it made and how many failed.
-fn sequence(seed: u64) -> (usize, usize) {
+/// Counts what it did in `stats`.
+fn sequence(seed: u64, stats: &mut Stats) {
     let mut rng = Rng(seed);
     let finite = !rng.one_in(3);
     let arrays = ArrayBytes::random(&mut rng, finite);
@@ -1814,6 +2069,19 @@ fn sequence(seed: u64) -> (usize, usize) {
             address: 0x1000,
         });
         prologue.push(Op::RenderMode(GL_FEEDBACK));
+    }
+    // Selection in a third of the sequences (leaving feedback if it began), its name stack
+    // sometimes empty, sometimes near or at its limit.
+    if rng.one_in(3) {
+        prologue.push(select_buffer(&mut rng));
+        prologue.push(Op::RenderMode(GL_SELECT));
+        prologue.push(Op::InitNames);
+        let names = match rng.below(4) {
+            0 => 0,
+            1 => rng.range(1, 5),
+            _ => rng.range(60, 66),
+        };
+        prologue.extend((0..names).map(|name| Op::PushName(name as u32)));
     }
     if !rng.one_in(4) {
         prologue.push(Op::CaptureBegin);
@@ -1856,13 +2124,14 @@ fn sequence(seed: u64) -> (usize, usize) {
     }
 
     let steps = prologue.len() + 20 + rng.below(100);
+    let mut modes = Modes::default();
     let mut failed = 0;
     // The snapshot of the state since the last failed call, while no other call could change it.
     let mut unchanged: Option<Snapshot> = None;
     for step in 0..steps {
         let op = match prologue.get(step) {
             Some(op) => op.clone(),
-            None => next_op(&mut rng, ctx.inside_begin_end(), finite),
+            None => next_op(&mut rng, ctx.inside_begin_end(), modes.selecting, finite),
         };
         history.push(op.clone());
         if let Op::GetError = op {
@@ -1879,8 +2148,13 @@ fn sequence(seed: u64) -> (usize, usize) {
         }
         let must_fail = op.must_fail(ctx.inside_begin_end());
         let before = ctx.clone();
-        let (result, check) = match catch_unwind(AssertUnwindSafe(|| apply(&mut ctx, &op, &arrays)))
-        {
+        let expected = (!ctx.inside_begin_end())
+            .then(|| modes.expected(&op))
+            .flatten();
+        let outcome = catch_unwind(AssertUnwindSafe(|| {
+            apply(&mut ctx, &op, &arrays, &modes.names_seen, stats)
+        }));
+        let (result, check) = match outcome {
             Ok(outcome) => outcome,
             Err(_) => fail(&history, step, "panicked"),
         };
@@ -1889,6 +2163,30 @@ fn sequence(seed: u64) -> (usize, usize) {
         }
         if must_fail && result.is_ok() {
             fail(&history, step, "accepted a call GL must reject");
+        }
+        if expected.is_some_and(|expected| expected != result) {
+            let what = format!(
+                "{result:?}, expected {expected:?} (modes: {:?})",
+                modes.names
+            );
+            fail(&history, step, &what);
+        }
+        match (&op, result) {
+            (_, Ok(())) => modes.succeeded(&op),
+            (Op::PushName(_), Err(GlError::StackOverflow)) => stats.name_overflows += 1,
+            (Op::PopName, Err(GlError::StackUnderflow)) => stats.name_underflows += 1,
+            _ => {}
+        }
+        if !ctx.inside_begin_end() {
+            let depth = ctx.get(GL_NAME_STACK_DEPTH).map(|v| v.as_ints()[0]);
+            let mode = ctx.get(GL_RENDER_MODE).map(|v| v.as_ints()[0] as GLenum);
+            if depth != Ok(modes.names.len() as i32) || (mode == Ok(GL_SELECT)) != modes.selecting {
+                let what = format!(
+                    "name stack {depth:?} in {mode:?}, expected {:?}",
+                    modes.names
+                );
+                fail(&history, step, &what);
+            }
         }
         if let Err(error) = result {
             failed += 1;
@@ -1915,7 +2213,13 @@ fn sequence(seed: u64) -> (usize, usize) {
         let what = format!("captured vertex {i}: {:?}", captured[i]);
         fail(&history, steps, &what);
     }
-    let (result, check) = apply(&mut ctx, &Op::RenderMode(GL_RENDER), &arrays);
+    let (result, check) = apply(
+        &mut ctx,
+        &Op::RenderMode(GL_RENDER),
+        &arrays,
+        &modes.names_seen,
+        stats,
+    );
     history.push(Op::RenderMode(GL_RENDER));
     if let Err(problem) = check.and(result.map_err(|e| format!("{e:?}"))) {
         fail(&history, steps, &problem);
@@ -1923,22 +2227,26 @@ fn sequence(seed: u64) -> (usize, usize) {
     if ctx.get_error() != first_error.unwrap_or(GL_NO_ERROR) {
         fail(&history, steps, "the error flag lost its first error");
     }
-    (steps, failed)
+    stats.calls += steps;
+    stats.failed += failed;
 }
 
 fn sequences(seeds: std::ops::Range<u64>) {
-    let (mut calls, mut failed) = (0, 0);
+    let mut stats = Stats::default();
     for seed in seeds.clone() {
-        let (c, f) = sequence(seed);
-        calls += c;
-        failed += f;
+        sequence(seed, &mut stats);
     }
-    // The sequences must exercise both sides of the rule.
+    // The sequences must exercise both sides of the rule, and selection's.
     let n = seeds.end - seeds.start;
+    let Stats { calls, failed, .. } = stats;
     assert!(calls > 50 * n as usize, "{calls} calls in {n} sequences");
     assert!(
         failed > calls / 5 && failed < calls * 4 / 5,
         "{failed} of {calls} failed"
+    );
+    assert!(
+        stats.hits > 0 && stats.overflows > 0 && stats.name_overflows > 0,
+        "{stats:?}"
     );
 }
 
@@ -2030,6 +2338,11 @@ unsafe extern "C" {
         ty: GLenum,
         indices: *const c_void,
     );
+    fn glSelectBuffer(size: GLsizei, buffer: *mut GLuint);
+    safe fn glInitNames();
+    safe fn glPushName(name: GLuint);
+    safe fn glPopName();
+    safe fn glLoadName(name: GLuint);
     fn fflCaptureBegin();
     fn fflCaptureEnd();
     fn fflCaptureReadVertices(first: GLuint, count: GLuint, out: *mut c_void) -> GLuint;
@@ -2079,7 +2392,7 @@ unsafe fn bad_call(rng: &mut Rng) -> String {
     let count = 1 + rng.below(8) as i32;
     let floats = [0.5f32; 4];
     let doubles = [0.5f64; 4];
-    let call = rng.below(52);
+    let call = rng.below(54);
     // SAFETY: NULL pointers, or pointers to local arrays of 4 values, enough for every call.
     unsafe {
         match call {
@@ -2209,6 +2522,16 @@ unsafe fn bad_call(rng: &mut Rng) -> String {
                 false => glInterleavedArrays(rng.invalid_enum(&INTERLEAVED_FORMATS), 0, null()),
             },
             50 => glDrawArrays(rng.invalid_enum(&PRIMITIVES), 0, count),
+            52 => glSelectBuffer(count, null_mut()),
+            53 => {
+                let mut names = [0 as GLuint; 4];
+                let buffer = if rng.coin() {
+                    names.as_mut_ptr()
+                } else {
+                    null_mut()
+                };
+                glSelectBuffer(rng.pick(&[-1, -4, i32::MIN]), buffer);
+            }
             _ => glVertexPointer(4, rng.invalid_enum(&COMPONENT_TYPES[2..]), 0, null()),
         }
     }
@@ -2220,12 +2543,44 @@ static POSITION: [GLfloat; 3] = [0.0, 0.0, -0.5];
 
 /// A call that fails because of state its setup leaves (an enabled array with a NULL pointer,
 /// captured data to read into NULL): runs the setup, returns the call.
-fn setup_bad_call(rng: &mut Rng) -> (&'static str, Box<dyn FnOnce()>) {
+fn setup_bad_call(rng: &mut Rng, select: &mut [GLuint]) -> (&'static str, Box<dyn FnOnce()>) {
     let mode = rng.enumeration(&PRIMITIVES);
     let count = 1 + rng.below(8) as i32;
     // SAFETY (all blocks): NULL pointers, which the commands store or reject, or POSITION,
     // which lives as long as the program.
-    match rng.below(4) {
+    match rng.below(6) {
+        4 | 5 => {
+            // Selection with an empty name stack, or a full one.
+            leave_render_mode(select);
+            let (size, buffer) = (select.len() as GLsizei, select.as_mut_ptr());
+            // SAFETY: `select` outlives the selection (the test ends it).
+            unsafe { glSelectBuffer(size, buffer) };
+            glRenderMode(GL_SELECT);
+            glInitNames();
+            if rng.coin() {
+                (0..64).for_each(|name| glPushName(name));
+                return (
+                    "glPushName on a full name stack",
+                    Box::new(|| glPushName(64)),
+                );
+            }
+            match rng.below(4) {
+                0 => ("glPopName on an empty name stack", Box::new(|| glPopName())),
+                1 => (
+                    "glLoadName on an empty name stack",
+                    Box::new(|| glLoadName(1)),
+                ),
+                // SAFETY (both): glSelectBuffer in selection mode stores nothing.
+                2 => (
+                    "glSelectBuffer in selection mode",
+                    Box::new(move || unsafe { glSelectBuffer(size, buffer) }),
+                ),
+                _ => (
+                    "glSelectBuffer(NULL) in selection mode",
+                    Box::new(move || unsafe { glSelectBuffer(0, null_mut()) }),
+                ),
+            }
+        }
         0 => {
             unsafe {
                 glVertexPointer(3, GL_FLOAT, 0, null());
@@ -2282,8 +2637,29 @@ fn setup_bad_call(rng: &mut Rng) -> (&'static str, Box<dyn FnOnce()>) {
     }
 }
 
-/// Random valid state for the bad calls to meet: lighting, feedback into `buffer`, capture.
-fn random_valid_state(rng: &mut Rng, buffer: &mut [GLfloat]) {
+/// Leaves feedback or selection mode; hit records left in `select` must be well formed.
+fn leave_render_mode(select: &[GLuint]) {
+    let mut mode = 0;
+    let mut capacity = 0;
+    // SAFETY: one value each.
+    unsafe {
+        glGetIntegerv(GL_RENDER_MODE, &mut mode);
+        glGetIntegerv(GL_SELECTION_BUFFER_SIZE, &mut capacity);
+    }
+    let count = glRenderMode(GL_RENDER);
+    expect_no_error("glRenderMode(GL_RENDER)");
+    if mode as GLenum == GL_SELECT {
+        // The buffer is `select`, or NULL with size 0.
+        let records = &select[..capacity as usize];
+        if let Err(problem) = check_hit_records(records, count, false, None) {
+            panic!("glRenderMode(GL_RENDER) from GL_SELECT: {problem}");
+        }
+    }
+}
+
+/// Random valid state for the bad calls to meet: lighting, feedback into `buffer` or
+/// selection into `select` (or NULL, size 0), capture.
+fn random_valid_state(rng: &mut Rng, buffer: &mut [GLfloat], select: &mut [GLuint]) {
     glViewport(0, 0, 64, 64);
     if rng.coin() {
         glEnable(GL_LIGHTING);
@@ -2293,12 +2669,23 @@ fn random_valid_state(rng: &mut Rng, buffer: &mut [GLfloat]) {
     }
     // SAFETY: no pointers.
     unsafe { glDisableClientState(GL_COLOR_ARRAY) };
-    glRenderMode(GL_RENDER);
+    leave_render_mode(select);
     if rng.coin() {
         let kind = rng.pick(&FEEDBACK_TYPES);
         // SAFETY: `buffer` outlives the context's use of it (the test ends feedback).
         unsafe { glFeedbackBuffer(buffer.len() as i32, kind, buffer.as_mut_ptr()) };
         glRenderMode(GL_FEEDBACK);
+    } else if rng.coin() {
+        let (size, address) = match rng.below(3) {
+            0 => (0, null_mut()),
+            1 => (rng.below(8) as i32, select.as_mut_ptr()),
+            _ => (select.len() as i32, select.as_mut_ptr()),
+        };
+        // SAFETY: `select` outlives the selection (the test ends it); NULL with size 0.
+        unsafe { glSelectBuffer(size, address) };
+        glRenderMode(GL_SELECT);
+        glInitNames();
+        (0..rng.below(4) as GLuint).for_each(|name| glPushName(name));
     }
     if rng.coin() {
         // SAFETY: no pointers.
@@ -2312,11 +2699,12 @@ fn c_calls_with_null_pointers_and_wrong_enums_set_an_error_and_change_nothing() 
     let _context = fresh();
     let mut rng = Rng(0xC0FFEE);
     let mut buffer = vec![0.0f32; 4096];
+    let mut select = vec![0 as GLuint; 256];
     for round in 0..3000 {
         if round % 50 == 0 {
-            random_valid_state(&mut rng, &mut buffer);
+            random_valid_state(&mut rng, &mut buffer, &mut select);
         }
-        let setup = rng.one_in(5).then(|| setup_bad_call(&mut rng));
+        let setup = rng.one_in(5).then(|| setup_bad_call(&mut rng, &mut select));
         expect_no_error("the setup");
         let inside = rng.one_in(3);
         if inside {
@@ -2330,6 +2718,15 @@ fn c_calls_with_null_pointers_and_wrong_enums_set_an_error_and_change_nothing() 
             Some((name, call)) => {
                 call();
                 name.to_string()
+            }
+            None if inside && rng.one_in(6) => {
+                match rng.below(4) {
+                    0 => glInitNames(),
+                    1 => glPushName(7),
+                    2 => glPopName(),
+                    _ => glLoadName(7),
+                }
+                "a name-stack command inside glBegin/glEnd".to_string()
             }
             // SAFETY: the calls pass NULL or local arrays of four values.
             None => unsafe { bad_call(&mut rng) },
@@ -2349,5 +2746,5 @@ fn c_calls_with_null_pointers_and_wrong_enums_set_an_error_and_change_nothing() 
             "{what}: the flag was not cleared"
         );
     }
-    glRenderMode(GL_RENDER);
+    leave_render_mode(&select);
 }
