@@ -361,8 +361,28 @@ typedef struct FflCapturedPrimitive {
 #define GL_CURRENT_TEXTURE_COORDS 2819
 #endif
 
+#ifndef GL_CURRENT_RASTER_COLOR
+#define GL_CURRENT_RASTER_COLOR 2820
+#endif
+
+#ifndef GL_CURRENT_RASTER_TEXTURE_COORDS
+#define GL_CURRENT_RASTER_TEXTURE_COORDS 2822
+#endif
+
 #ifndef GL_CURRENT_RASTER_POSITION
 #define GL_CURRENT_RASTER_POSITION 2823
+#endif
+
+#ifndef GL_CURRENT_RASTER_POSITION_VALID
+#define GL_CURRENT_RASTER_POSITION_VALID 2824
+#endif
+
+#ifndef GL_CURRENT_RASTER_DISTANCE
+#define GL_CURRENT_RASTER_DISTANCE 2825
+#endif
+
+#ifndef GL_CURRENT_RASTER_SECONDARY_COLOR
+#define GL_CURRENT_RASTER_SECONDARY_COLOR 33887
 #endif
 
 #ifndef GL_MATRIX_MODE
@@ -1743,6 +1763,102 @@ void glRectfv(const GLfloat *v1, const GLfloat *v2);
  `v1` and `v2` are NULL or point to 2 values each.
  */
 void glRectdv(const GLdouble *v1, const GLdouble *v2);
+
+void glRasterPos2s(GLshort x, GLshort y);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glRasterPos2sv(const GLshort *v);
+
+void glRasterPos2i(GLint x, GLint y);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glRasterPos2iv(const GLint *v);
+
+void glRasterPos2f(GLfloat x, GLfloat y);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glRasterPos2fv(const GLfloat *v);
+
+void glRasterPos2d(GLdouble x, GLdouble y);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glRasterPos2dv(const GLdouble *v);
+
+void glRasterPos3s(GLshort x, GLshort y, GLshort z);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glRasterPos3sv(const GLshort *v);
+
+void glRasterPos3i(GLint x, GLint y, GLint z);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glRasterPos3iv(const GLint *v);
+
+void glRasterPos3f(GLfloat x, GLfloat y, GLfloat z);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glRasterPos3fv(const GLfloat *v);
+
+void glRasterPos3d(GLdouble x, GLdouble y, GLdouble z);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glRasterPos3dv(const GLdouble *v);
+
+void glRasterPos4s(GLshort x, GLshort y, GLshort z, GLshort w);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glRasterPos4sv(const GLshort *v);
+
+void glRasterPos4i(GLint x, GLint y, GLint z, GLint w);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glRasterPos4iv(const GLint *v);
+
+void glRasterPos4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glRasterPos4fv(const GLfloat *v);
+
+void glRasterPos4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glRasterPos4dv(const GLdouble *v);
 
 /*
  `buffer` must have room for `size` unsigned integers until glRenderMode ends selection.

@@ -42,6 +42,7 @@ pub struct Context {
     pub(crate) current: CurrentAttribs,
     pub(crate) matrices: Matrices,
     pub(crate) raster: RasterState,
+    pub(crate) raster_position: crate::commands::raster_pos::RasterPosition,
     pub(crate) render_mode: RenderMode,
     pub(crate) feedback: FeedbackBuffer,
     /// The address glFeedbackBuffer was given: only the C layer writes through it.
@@ -72,6 +73,7 @@ impl Context {
             current: CurrentAttribs::default(),
             matrices: Matrices::default(),
             raster: RasterState::default(),
+            raster_position: Default::default(),
             render_mode: RenderMode::Render,
             feedback: FeedbackBuffer::default(),
             feedback_address: 0,

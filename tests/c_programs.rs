@@ -870,6 +870,8 @@ c_programs!(
     osmesa_diff_scalar_pnames,
     osmesa_diff_back_color_material,
     osmesa_diff_texture_matrix,
+    raster_pos,
+    osmesa_diff_raster_pos_lighting,
     system_gl_header,
     spot_cutoff,
     local_viewer,

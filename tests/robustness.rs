@@ -369,7 +369,7 @@ const CAPS: [GLenum; 56] = [
 /// How many of `CAPS` are capabilities.
 const VALID_CAPS: usize = 53;
 /// Every glGet pname fflight answers, besides the capabilities.
-const GET_PNAMES: [GLenum; 69] = [
+const GET_PNAMES: [GLenum; 75] = [
     GL_MAX_LIGHTS,
     GL_MAX_CLIP_PLANES,
     GL_MAX_VIEWPORT_DIMS,
@@ -381,6 +381,12 @@ const GET_PNAMES: [GLenum; 69] = [
     GL_CURRENT_COLOR,
     GL_CURRENT_NORMAL,
     GL_CURRENT_TEXTURE_COORDS,
+    GL_CURRENT_RASTER_POSITION,
+    GL_CURRENT_RASTER_POSITION_VALID,
+    GL_CURRENT_RASTER_COLOR,
+    GL_CURRENT_RASTER_SECONDARY_COLOR,
+    GL_CURRENT_RASTER_TEXTURE_COORDS,
+    GL_CURRENT_RASTER_DISTANCE,
     GL_EDGE_FLAG,
     GL_LIGHT_MODEL_AMBIENT,
     GL_LIGHT_MODEL_LOCAL_VIEWER,

@@ -41,7 +41,7 @@ fn vertex(v: [f32; 4]) {
 ///
 /// # Safety
 /// A non-NULL `v` must point to `N` readable values.
-unsafe fn read_vector<T: Component, const N: usize>(
+pub(super) unsafe fn read_vector<T: Component, const N: usize>(
     v: *const T,
     pad: [f32; 4],
     convert: fn(T) -> f32,

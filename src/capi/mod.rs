@@ -14,6 +14,7 @@ mod lighting;
 mod matrix;
 mod query;
 mod raster;
+mod raster_pos;
 mod select;
 
 use std::panic::{AssertUnwindSafe, catch_unwind};

@@ -7,5 +7,6 @@ pub mod lighting;
 pub mod matrix;
 pub mod query;
 pub mod raster;
+pub mod raster_pos;
 pub mod select;
 pub mod vertex;

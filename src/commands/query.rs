@@ -93,6 +93,14 @@ impl Context {
             GL_CURRENT_COLOR => normalized(&self.current.color.to_array()),
             GL_CURRENT_NORMAL => normalized(&self.current.normal.to_array()),
             GL_CURRENT_TEXTURE_COORDS => floats(&self.current.tex_coord.to_array()),
+            GL_CURRENT_RASTER_POSITION => floats(&self.raster_position.window.to_array()),
+            GL_CURRENT_RASTER_POSITION_VALID => StateValue::Bools(vec![self.raster_position.valid]),
+            GL_CURRENT_RASTER_COLOR => normalized(&self.raster_position.color.to_array()),
+            GL_CURRENT_RASTER_SECONDARY_COLOR => {
+                normalized(&self.raster_position.secondary_color.to_array())
+            }
+            GL_CURRENT_RASTER_TEXTURE_COORDS => floats(&self.raster_position.tex_coord.to_array()),
+            GL_CURRENT_RASTER_DISTANCE => floats(&[self.raster_position.distance]),
             GL_EDGE_FLAG => StateValue::Bools(vec![self.current.edge_flag]),
             GL_LIGHT_MODEL_AMBIENT => normalized(&self.light_model.ambient.to_array()),
             GL_LIGHT_MODEL_LOCAL_VIEWER => StateValue::Bools(vec![self.light_model.local_viewer]),

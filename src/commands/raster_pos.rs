@@ -1,0 +1,74 @@
+//! The current raster position (§2.13): glRasterPos processes one position like a vertex and
+//! keeps the result for the queries of §6.1.
+
+use glam::Vec4;
+
+use crate::context::{Context, RenderMode};
+use crate::error::GlResult;
+use crate::pipeline::clip::point_visible;
+
+/// The current raster position and the attributes it carries (table 6.5).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RasterPosition {
+    /// Window x, y, z and the clip w.
+    pub window: Vec4,
+    pub valid: bool,
+    /// The front primary color, lit when lighting is on.
+    pub color: Vec4,
+    pub secondary_color: Vec4,
+    /// The texture coordinate after the texture matrix.
+    pub tex_coord: Vec4,
+    /// The eye-space distance from the origin to the position.
+    pub distance: f32,
+}
+
+impl Default for RasterPosition {
+    fn default() -> RasterPosition {
+        RasterPosition {
+            window: Vec4::W,
+            valid: true,
+            color: Vec4::ONE,
+            secondary_color: Vec4::W,
+            tex_coord: Vec4::W,
+            distance: 0.0,
+        }
+    }
+}
+
+impl Context {
+    /// glRasterPos (§2.13): the position is transformed and lit as a vertex with the current
+    /// normal, colors and texture coordinate, then clipped as a point against the view volume
+    /// and the enabled user clip planes. If culled, the raster position becomes invalid and
+    /// its other values stay as they were. In selection mode a valid position is a hit (§5.2);
+    /// in feedback mode it emits nothing (GL_BITMAP_TOKEN and GL_DRAW_PIXEL_TOKEN belong to
+    /// glBitmap and glDrawPixels).
+    pub fn raster_pos(&mut self, object: Vec4) -> GlResult {
+        self.outside_begin_end()?;
+        let attribs = self.current;
+        let vertex = self.derived().process(object, &attribs);
+        if !point_visible(&self.clip_planes(), &vertex) {
+            self.raster_position.valid = false;
+            return Ok(());
+        }
+        let eye = vertex.eye.as_dvec4();
+        // The distance to the point (x, y, z) / w, as the spec's "distance to the vertex".
+        let eye_point = if eye.w != 0.0 && eye.w != 1.0 {
+            eye.truncate() / eye.w
+        } else {
+            eye.truncate()
+        };
+        let window = self.raster.window(vertex.clip);
+        self.raster_position = RasterPosition {
+            window,
+            valid: true,
+            color: vertex.colors.front.primary,
+            secondary_color: vertex.colors.front.secondary,
+            tex_coord: vertex.tex_coord,
+            distance: eye_point.length() as f32,
+        };
+        if self.render_mode == RenderMode::Select {
+            self.selection.hit(window.z);
+        }
+        Ok(())
+    }
+}
