@@ -19,8 +19,8 @@ impl Default for CurrentAttribs {
     fn default() -> CurrentAttribs {
         CurrentAttribs {
             color: Vec4::ONE,
-            // The secondary color has no alpha of its own: GL keeps it at 0 (GL 1.4 §2.7).
-            secondary_color: Vec4::ZERO,
+            // The state tables' initial value (and Mesa's), like the raster secondary color.
+            secondary_color: Vec4::W,
             normal: Vec3::Z,
             tex_coord: Vec4::W,
             edge_flag: true,
