@@ -881,6 +881,118 @@ typedef struct FflCapturedPrimitive {
 #define GL_COLOR_BUFFER_BIT 16384
 #endif
 
+#ifndef GL_ALPHA_TEST
+#define GL_ALPHA_TEST 3008
+#endif
+
+#ifndef GL_AUTO_NORMAL
+#define GL_AUTO_NORMAL 3456
+#endif
+
+#ifndef GL_BLEND
+#define GL_BLEND 3042
+#endif
+
+#ifndef GL_COLOR_LOGIC_OP
+#define GL_COLOR_LOGIC_OP 3058
+#endif
+
+#ifndef GL_COLOR_SUM
+#define GL_COLOR_SUM 33880
+#endif
+
+#ifndef GL_DEPTH_TEST
+#define GL_DEPTH_TEST 2929
+#endif
+
+#ifndef GL_DITHER
+#define GL_DITHER 3024
+#endif
+
+#ifndef GL_FOG
+#define GL_FOG 2912
+#endif
+
+#ifndef GL_INDEX_LOGIC_OP
+#define GL_INDEX_LOGIC_OP 3057
+#endif
+
+#ifndef GL_LINE_SMOOTH
+#define GL_LINE_SMOOTH 2848
+#endif
+
+#ifndef GL_LINE_STIPPLE
+#define GL_LINE_STIPPLE 2852
+#endif
+
+#ifndef GL_MULTISAMPLE
+#define GL_MULTISAMPLE 32925
+#endif
+
+#ifndef GL_POINT_SMOOTH
+#define GL_POINT_SMOOTH 2832
+#endif
+
+#ifndef GL_POLYGON_OFFSET_FILL
+#define GL_POLYGON_OFFSET_FILL 32823
+#endif
+
+#ifndef GL_POLYGON_OFFSET_LINE
+#define GL_POLYGON_OFFSET_LINE 10754
+#endif
+
+#ifndef GL_POLYGON_OFFSET_POINT
+#define GL_POLYGON_OFFSET_POINT 10753
+#endif
+
+#ifndef GL_POLYGON_SMOOTH
+#define GL_POLYGON_SMOOTH 2881
+#endif
+
+#ifndef GL_POLYGON_STIPPLE
+#define GL_POLYGON_STIPPLE 2882
+#endif
+
+#ifndef GL_SCISSOR_TEST
+#define GL_SCISSOR_TEST 3089
+#endif
+
+#ifndef GL_STENCIL_TEST
+#define GL_STENCIL_TEST 2960
+#endif
+
+#ifndef GL_TEXTURE_1D
+#define GL_TEXTURE_1D 3552
+#endif
+
+#ifndef GL_TEXTURE_2D
+#define GL_TEXTURE_2D 3553
+#endif
+
+#ifndef GL_TEXTURE_3D
+#define GL_TEXTURE_3D 32879
+#endif
+
+#ifndef GL_TEXTURE_CUBE_MAP
+#define GL_TEXTURE_CUBE_MAP 34067
+#endif
+
+#ifndef GL_TEXTURE_GEN_S
+#define GL_TEXTURE_GEN_S 3168
+#endif
+
+#ifndef GL_TEXTURE_GEN_T
+#define GL_TEXTURE_GEN_T 3169
+#endif
+
+#ifndef GL_TEXTURE_GEN_R
+#define GL_TEXTURE_GEN_R 3170
+#endif
+
+#ifndef GL_TEXTURE_GEN_Q
+#define GL_TEXTURE_GEN_Q 3171
+#endif
+
 
 
 

@@ -9,34 +9,34 @@ pub const MAX_CLIP_PLANES: usize = 6;
 /// GL 1.5 capabilities fflight accepts and reports but that do not affect vertex processing
 /// (rasterization and per-fragment state): glEnable stores them so glIsEnabled answers.
 const OTHER_CAPABILITIES: &[GLenum] = &[
-    0x0BC0, // GL_ALPHA_TEST
-    0x0D80, // GL_AUTO_NORMAL
-    0x0BE2, // GL_BLEND
-    0x0BF2, // GL_COLOR_LOGIC_OP
-    0x8458, // GL_COLOR_SUM
-    0x0B71, // GL_DEPTH_TEST
-    0x0BD0, // GL_DITHER
-    0x0B60, // GL_FOG
-    0x0BF1, // GL_INDEX_LOGIC_OP
-    0x0B20, // GL_LINE_SMOOTH
-    0x0B24, // GL_LINE_STIPPLE
-    0x809D, // GL_MULTISAMPLE
-    0x0B10, // GL_POINT_SMOOTH
-    0x8037, // GL_POLYGON_OFFSET_FILL
-    0x2A02, // GL_POLYGON_OFFSET_LINE
-    0x2A01, // GL_POLYGON_OFFSET_POINT
-    0x0B41, // GL_POLYGON_SMOOTH
-    0x0B42, // GL_POLYGON_STIPPLE
-    0x0C11, // GL_SCISSOR_TEST
-    0x0B90, // GL_STENCIL_TEST
-    0x0DE0, // GL_TEXTURE_1D
-    0x0DE1, // GL_TEXTURE_2D
-    0x806F, // GL_TEXTURE_3D
-    0x8513, // GL_TEXTURE_CUBE_MAP
-    0x0C60, // GL_TEXTURE_GEN_S
-    0x0C61, // GL_TEXTURE_GEN_T
-    0x0C62, // GL_TEXTURE_GEN_R
-    0x0C63, // GL_TEXTURE_GEN_Q
+    GL_ALPHA_TEST,
+    GL_AUTO_NORMAL,
+    GL_BLEND,
+    GL_COLOR_LOGIC_OP,
+    GL_COLOR_SUM,
+    GL_DEPTH_TEST,
+    GL_DITHER,
+    GL_FOG,
+    GL_INDEX_LOGIC_OP,
+    GL_LINE_SMOOTH,
+    GL_LINE_STIPPLE,
+    GL_MULTISAMPLE,
+    GL_POINT_SMOOTH,
+    GL_POLYGON_OFFSET_FILL,
+    GL_POLYGON_OFFSET_LINE,
+    GL_POLYGON_OFFSET_POINT,
+    GL_POLYGON_SMOOTH,
+    GL_POLYGON_STIPPLE,
+    GL_SCISSOR_TEST,
+    GL_STENCIL_TEST,
+    GL_TEXTURE_1D,
+    GL_TEXTURE_2D,
+    GL_TEXTURE_3D,
+    GL_TEXTURE_CUBE_MAP,
+    GL_TEXTURE_GEN_S,
+    GL_TEXTURE_GEN_T,
+    GL_TEXTURE_GEN_R,
+    GL_TEXTURE_GEN_Q,
 ];
 
 /// The enable flags.
@@ -85,7 +85,7 @@ impl Capability {
 impl Enables {
     pub fn initial() -> Enables {
         Enables {
-            other: vec![0x0BD0], // GL_DITHER is enabled initially
+            other: vec![GL_DITHER], // enabled initially (§4.1.6)
             ..Enables::default()
         }
     }
