@@ -7,7 +7,7 @@ use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use crate::state::convert::{color_to_int, float_to_int, int_to_color};
 use crate::state::enables::Capability;
-use crate::state::light::{is_light_color, light_index, light_param_count, light_params_from_ints};
+use crate::state::light::{is_light_color, light_index, light_param_count};
 use crate::state::light_model::light_model_param_count;
 use crate::state::material::{
     BACK, FRONT, MaterialMask, faces, is_material_color, material_param_count,
@@ -75,14 +75,8 @@ impl Context {
         self.outside_begin_end()?;
         let index = light_index(light)?;
         let count = light_param_count(pname).ok_or(GlError::InvalidEnum)?;
-        if params.len() < count {
-            return Err(GlError::InvalidValue);
-        }
-        self.store_light(
-            index,
-            pname,
-            light_params_from_ints(pname, &params[..count]),
-        )
+        let values = ints_to_floats(params, count, is_light_color(pname))?;
+        self.store_light(index, pname, values)
     }
 
     /// glLightf / glLighti: single-valued parameters only.

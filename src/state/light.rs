@@ -2,7 +2,6 @@
 
 use glam::{Mat4, Vec3, Vec4};
 
-use super::convert::int_to_color;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
 
@@ -73,19 +72,6 @@ pub fn light_param_count(pname: GLenum) -> Option<usize> {
 /// Whether `pname` is a color, converted with the signed-integer color mapping in glLightiv.
 pub fn is_light_color(pname: GLenum) -> bool {
     matches!(pname, GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR)
-}
-
-/// Integer parameters as floats: colors by the linear mapping, the rest directly.
-pub fn light_params_from_ints(pname: GLenum, params: &[i32]) -> Vec4 {
-    let mut values = [0.0; 4];
-    for (value, &param) in values.iter_mut().zip(params) {
-        *value = if is_light_color(pname) {
-            int_to_color(param)
-        } else {
-            param as f32
-        };
-    }
-    Vec4::from_array(values)
 }
 
 impl Light {
