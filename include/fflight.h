@@ -30,6 +30,11 @@ typedef double GLclampd;
 #endif
 
 /*
+ At most this many threads, whatever is asked.
+ */
+#define MAX_THREADS 256
+
+/*
  A context as applications hold it (`FflContext *` in C).
  */
 typedef struct FflContext FflContext;
@@ -1595,6 +1600,19 @@ struct FflContext *fflGetCurrentContext(void);
  `context` is NULL or a live pointer from `fflCreateContext`; it must not be used after.
  */
 GLboolean fflDestroyContext(struct FflContext *context);
+
+/*
+ Sets how many threads fflight may use for large draws and bulk calls (process-wide):
+ 1 keeps all work on the calling thread, 0 restores the default (the environment variable
+ FFLIGHT_THREADS, else the number of cores). Results are the same whatever the count.
+ GL_INVALID_VALUE for a negative count.
+ */
+void fflSetThreads(GLint count);
+
+/*
+ How many threads fflight uses for large draws and bulk calls.
+ */
+GLint fflGetThreads(void);
 
 void glBegin(GLenum mode);
 

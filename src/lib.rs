@@ -22,6 +22,7 @@ pub mod gl;
 pub mod lighting;
 pub mod pipeline;
 pub mod state;
+pub mod threads;
 
 pub use context::Context;
 pub use error::{GlError, GlResult};

@@ -74,3 +74,18 @@ pub unsafe extern "C" fn fflDestroyContext(context: *mut FflContext) -> GLboolea
     unsafe { drop(Arc::from_raw(context.cast_const())) };
     GL_TRUE
 }
+
+/// Sets how many threads fflight may use for large draws and bulk calls (process-wide):
+/// 1 keeps all work on the calling thread, 0 restores the default (the environment variable
+/// FFLIGHT_THREADS, else the number of cores). Results are the same whatever the count.
+/// GL_INVALID_VALUE for a negative count.
+#[unsafe(no_mangle)]
+pub extern "C" fn fflSetThreads(count: GLint) {
+    with_context(|_| crate::threads::set_threads(count))
+}
+
+/// How many threads fflight uses for large draws and bulk calls.
+#[unsafe(no_mangle)]
+pub extern "C" fn fflGetThreads() -> GLint {
+    with_context(|_| Ok(crate::threads::thread_count() as GLint))
+}

@@ -1,0 +1,40 @@
+//! How many threads large draws and bulk calls may use: `fflSetThreads` / [`set_threads`],
+//! else the environment variable `FFLIGHT_THREADS`, else the number of cores. Process-wide,
+//! like the pool that runs the work.
+
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use crate::error::{GlError, GlResult};
+
+/// The count set by `set_threads`; 0 while the default applies.
+static REQUESTED: AtomicUsize = AtomicUsize::new(0);
+
+/// At most this many threads, whatever is asked.
+pub const MAX_THREADS: usize = 256;
+
+/// Sets how many threads large draws and bulk calls use: 1 runs everything on the calling
+/// thread, 0 restores the default (`FFLIGHT_THREADS`, else the number of cores). Counts above
+/// [`MAX_THREADS`] are clamped to it; a negative count is GL_INVALID_VALUE.
+pub fn set_threads(count: i32) -> GlResult {
+    let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
+    REQUESTED.store(count.min(MAX_THREADS), Ordering::Relaxed);
+    Ok(())
+}
+
+/// The number of threads in use: the count set, or the default.
+pub fn thread_count() -> usize {
+    match REQUESTED.load(Ordering::Relaxed) {
+        0 => default_thread_count(),
+        n => n,
+    }
+}
+
+/// `FFLIGHT_THREADS` when it holds a positive number, else the number of cores.
+fn default_thread_count() -> usize {
+    std::env::var("FFLIGHT_THREADS")
+        .ok()
+        .and_then(|v| v.trim().parse::<usize>().ok())
+        .filter(|&n| n > 0)
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+        .min(MAX_THREADS)
+}
