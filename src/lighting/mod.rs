@@ -11,6 +11,8 @@
 //! and spot exponents magnify rounding (x^128 multiplies a relative error by 128), and this
 //! path is the reference a faster single-precision engine is measured against.
 
+pub mod batch;
+pub mod lanes;
 mod prepared;
 
 pub use prepared::{PreparedFace, PreparedLight, PreparedLighting};

@@ -5,6 +5,7 @@
 //! GL_FEEDBACK mode and recorded as selection hits in GL_SELECT mode.
 
 pub mod assembly;
+pub mod block;
 pub mod capture;
 pub mod clip;
 pub mod feedback;

@@ -1,0 +1,308 @@
+//! Lanes: one f64 or f32 value per vertex of a block, with the element-wise arithmetic the
+//! batch engine needs. Every operation is a plain loop over a fixed-size array, which the
+//! compiler turns into vector instructions of the width the calling kernel was compiled for
+//! (AVX-512, AVX2 or NEON through `multiversion`, SSE2 otherwise). Each lane rounds exactly as
+//! the scalar operation would: no fused multiply-add, no approximate reciprocals, so results
+//! are the same on every machine and every vector width.
+
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// Vertices per block.
+pub const LANES: usize = 8;
+
+/// One f64 per lane.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(align(64))]
+pub struct Lanes(pub [f64; LANES]);
+
+/// One f32 per lane: the block's inputs and outputs.
+pub type LanesF32 = [f32; LANES];
+
+impl Lanes {
+    pub const ZERO: Lanes = Lanes([0.0; LANES]);
+    pub const ONE: Lanes = Lanes([1.0; LANES]);
+
+    #[inline(always)]
+    pub fn splat(value: f64) -> Lanes {
+        Lanes([value; LANES])
+    }
+
+    #[inline(always)]
+    pub fn from_f32(values: &LanesF32) -> Lanes {
+        Lanes(std::array::from_fn(|i| f64::from(values[i])))
+    }
+
+    #[inline(always)]
+    pub fn to_f32(self) -> LanesF32 {
+        std::array::from_fn(|i| self.0[i] as f32)
+    }
+
+    #[inline(always)]
+    fn map(self, f: impl Fn(f64) -> f64) -> Lanes {
+        Lanes(std::array::from_fn(|i| f(self.0[i])))
+    }
+
+    #[inline(always)]
+    fn zip(self, other: Lanes, f: impl Fn(f64, f64) -> f64) -> Lanes {
+        Lanes(std::array::from_fn(|i| f(self.0[i], other.0[i])))
+    }
+
+    #[inline(always)]
+    pub fn sqrt(self) -> Lanes {
+        self.map(f64::sqrt)
+    }
+
+    /// `self` where it is greater than `floor`, else `floor`: a NaN lane becomes `floor`, as
+    /// with `f64::max`.
+    #[inline(always)]
+    pub fn max(self, floor: Lanes) -> Lanes {
+        self.zip(floor, |a, b| if a > b { a } else { b })
+    }
+
+    /// `then` in the lanes where `self > bound`, else `otherwise`.
+    #[inline(always)]
+    pub fn select_gt(self, bound: Lanes, then: Lanes, otherwise: Lanes) -> Lanes {
+        Lanes(std::array::from_fn(|i| {
+            if self.0[i] > bound.0[i] {
+                then.0[i]
+            } else {
+                otherwise.0[i]
+            }
+        }))
+    }
+
+    /// `then` in the lanes where `self >= bound`, else `otherwise`.
+    #[inline(always)]
+    pub fn select_ge(self, bound: Lanes, then: Lanes, otherwise: Lanes) -> Lanes {
+        Lanes(std::array::from_fn(|i| {
+            if self.0[i] >= bound.0[i] {
+                then.0[i]
+            } else {
+                otherwise.0[i]
+            }
+        }))
+    }
+
+    /// `self` to the power `exponent`, one exponent for every lane (a shininess or spot
+    /// exponent, in [0, 128]). Integer exponents multiply by squaring, in the order compiler
+    /// runtimes' `powi` uses, so a lane equals the scalar `powi`; others take `powf` per lane.
+    #[inline(always)]
+    pub fn pow(self, exponent: f64) -> Lanes {
+        if exponent.fract() != 0.0 {
+            return self.map(|x| x.powf(exponent));
+        }
+        let mut bits = exponent as u32;
+        let mut base = self;
+        let mut result = Lanes::ONE;
+        loop {
+            if bits & 1 != 0 {
+                result = result * base;
+            }
+            bits /= 2;
+            if bits == 0 {
+                return result;
+            }
+            base = base * base;
+        }
+    }
+}
+
+macro_rules! lane_operator {
+    ($trait:ident, $method:ident, $op:tt) => {
+        impl $trait for Lanes {
+            type Output = Lanes;
+            #[inline(always)]
+            fn $method(self, other: Lanes) -> Lanes {
+                self.zip(other, |a, b| a $op b)
+            }
+        }
+    };
+}
+lane_operator!(Add, add, +);
+lane_operator!(Sub, sub, -);
+lane_operator!(Mul, mul, *);
+lane_operator!(Div, div, /);
+
+impl Neg for Lanes {
+    type Output = Lanes;
+    #[inline(always)]
+    fn neg(self) -> Lanes {
+        self.map(|a| -a)
+    }
+}
+
+/// A 3-vector per lane.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vec3s {
+    pub x: Lanes,
+    pub y: Lanes,
+    pub z: Lanes,
+}
+
+impl Vec3s {
+    pub const ZERO: Vec3s = Vec3s {
+        x: Lanes::ZERO,
+        y: Lanes::ZERO,
+        z: Lanes::ZERO,
+    };
+
+    #[inline(always)]
+    pub fn splat(v: glam::DVec3) -> Vec3s {
+        Vec3s {
+            x: Lanes::splat(v.x),
+            y: Lanes::splat(v.y),
+            z: Lanes::splat(v.z),
+        }
+    }
+
+    #[inline(always)]
+    pub fn dot(self, other: Vec3s) -> Lanes {
+        self.x * other.x + self.y * other.y + self.z * other.z
+    }
+
+    #[inline(always)]
+    pub fn scale(self, s: Lanes) -> Vec3s {
+        Vec3s {
+            x: self.x * s,
+            y: self.y * s,
+            z: self.z * s,
+        }
+    }
+
+    #[inline(always)]
+    pub fn length(self) -> Lanes {
+        self.dot(self).sqrt()
+    }
+
+    /// Divided by `d` component-wise.
+    #[inline(always)]
+    pub fn div(self, d: Lanes) -> Vec3s {
+        Vec3s {
+            x: self.x / d,
+            y: self.y / d,
+            z: self.z / d,
+        }
+    }
+
+    /// The unit vector in this direction, or zero where the length is zero or not finite
+    /// (glam's `normalize_or_zero`, lane by lane).
+    #[inline(always)]
+    pub fn normalize_or_zero(self) -> Vec3s {
+        let recip = Lanes::ONE / self.length();
+        let usable = Lanes(std::array::from_fn(|i| {
+            let r = recip.0[i];
+            if r.is_finite() && r > 0.0 { r } else { 0.0 }
+        }));
+        let keep = |c: Lanes| {
+            Lanes(std::array::from_fn(|i| {
+                if usable.0[i] > 0.0 {
+                    c.0[i] * usable.0[i]
+                } else {
+                    0.0
+                }
+            }))
+        };
+        Vec3s {
+            x: keep(self.x),
+            y: keep(self.y),
+            z: keep(self.z),
+        }
+    }
+}
+
+impl Add for Vec3s {
+    type Output = Vec3s;
+    #[inline(always)]
+    fn add(self, o: Vec3s) -> Vec3s {
+        Vec3s {
+            x: self.x + o.x,
+            y: self.y + o.y,
+            z: self.z + o.z,
+        }
+    }
+}
+
+impl Sub for Vec3s {
+    type Output = Vec3s;
+    #[inline(always)]
+    fn sub(self, o: Vec3s) -> Vec3s {
+        Vec3s {
+            x: self.x - o.x,
+            y: self.y - o.y,
+            z: self.z - o.z,
+        }
+    }
+}
+
+impl Mul for Vec3s {
+    type Output = Vec3s;
+    /// Component-wise.
+    #[inline(always)]
+    fn mul(self, o: Vec3s) -> Vec3s {
+        Vec3s {
+            x: self.x * o.x,
+            y: self.y * o.y,
+            z: self.z * o.z,
+        }
+    }
+}
+
+impl Neg for Vec3s {
+    type Output = Vec3s;
+    #[inline(always)]
+    fn neg(self) -> Vec3s {
+        Vec3s {
+            x: -self.x,
+            y: -self.y,
+            z: -self.z,
+        }
+    }
+}
+
+/// Clamps each lane to [0, 1], a NaN lane to 0 (`lighting::clamp01`'s rule).
+#[inline(always)]
+pub fn clamp01(c: LanesF32) -> LanesF32 {
+    std::array::from_fn(|i| {
+        if c[i] > 0.0 {
+            if c[i] < 1.0 { c[i] } else { 1.0 }
+        } else {
+            0.0
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lane_power_equals_scalar_powi() {
+        let bases = Lanes([0.0, 0.3, 0.5, 0.9, 0.999, 1.0, 1.02, 0.7071]);
+        for exponent in 0..=128 {
+            let lanes = bases.pow(f64::from(exponent));
+            for (lane, base) in lanes.0.iter().zip(bases.0) {
+                assert_eq!(*lane, base.powi(exponent), "{base}^{exponent}");
+            }
+        }
+        assert_eq!(Lanes::splat(0.25).pow(0.5).0[0], 0.5);
+    }
+
+    #[test]
+    fn normalize_or_zero_matches_glam() {
+        let v = glam::DVec3::new(3.0, -4.0, 12.0);
+        let lanes = Vec3s::splat(v).normalize_or_zero();
+        let expected = v.normalize_or_zero();
+        assert_eq!(
+            [lanes.x.0[0], lanes.y.0[0], lanes.z.0[0]],
+            expected.to_array()
+        );
+        let zero = Vec3s::ZERO.normalize_or_zero();
+        assert_eq!(zero, Vec3s::ZERO);
+    }
+
+    #[test]
+    fn clamp_sends_nan_to_zero() {
+        let c = clamp01([f32::NAN, -1.0, 0.5, 2.0, 1.0, 0.0, f32::INFINITY, -0.0]);
+        assert_eq!(c, [0.0, 0.0, 0.5, 1.0, 1.0, 0.0, 1.0, 0.0]);
+    }
+}

@@ -1,0 +1,238 @@
+//! The batch engine (`lighting::batch::process_blocks`) against the scalar reference path
+//! (`DerivedState::process`) on random states and vertices: every lane must equal the scalar
+//! result to the last bit, with every kind of light, both viewers, one- and two-sided
+//! lighting, color material, normalize and rescale, w != 1, and integer and fractional
+//! exponents up to 128.
+
+use fflight::Context;
+use fflight::gl::*;
+use fflight::lighting::batch::process_blocks;
+use fflight::lighting::lanes::LANES;
+use fflight::pipeline::block::{InputBlock, OutputBlock};
+use fflight::pipeline::vertex::CurrentAttribs;
+use glam::{Vec3, Vec4};
+
+/// splitmix64.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+    fn uniform(&mut self, lo: f32, hi: f32) -> f32 {
+        lo + (hi - lo) * (self.next() >> 40) as f32 / (1u64 << 24) as f32
+    }
+    fn coin(&mut self) -> bool {
+        self.next() & 1 == 1
+    }
+    fn vec4(&mut self, lo: f32, hi: f32) -> Vec4 {
+        Vec4::new(
+            self.uniform(lo, hi),
+            self.uniform(lo, hi),
+            self.uniform(lo, hi),
+            self.uniform(lo, hi),
+        )
+    }
+    fn exponent(&mut self) -> f32 {
+        if self.coin() {
+            (self.next() % 129) as f32
+        } else {
+            self.uniform(0.0, 128.0)
+        }
+    }
+}
+
+fn random_state(rng: &mut Rng) -> Context {
+    let mut ctx = Context::new();
+    let on = |ctx: &mut Context, cap, enabled| ctx.set_capability(cap, enabled).unwrap();
+    on(&mut ctx, GL_LIGHTING, rng.next() % 8 != 0);
+    ctx.matrix_mode(GL_MODELVIEW).unwrap();
+    ctx.rotate(
+        f64::from(rng.uniform(0.0, 360.0)),
+        1.0,
+        f64::from(rng.uniform(-1.0, 1.0)),
+        0.5,
+    )
+    .unwrap();
+    if rng.coin() {
+        ctx.scale(
+            f64::from(rng.uniform(0.3, 3.0)),
+            f64::from(rng.uniform(0.3, 3.0)),
+            f64::from(rng.uniform(0.3, 3.0)),
+        )
+        .unwrap();
+    }
+    for i in 0..8 {
+        let light = GL_LIGHT0 + i;
+        on(&mut ctx, light, rng.coin());
+        let w = if rng.coin() {
+            0.0
+        } else {
+            rng.uniform(0.5, 2.0)
+        };
+        let p = rng.vec4(-3.0, 3.0);
+        ctx.light(light, GL_POSITION, &[p.x, p.y, p.z, w]).unwrap();
+        for pname in [GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR] {
+            ctx.light(light, pname, &rng.vec4(0.0, 1.0).to_array())
+                .unwrap();
+        }
+        if rng.coin() {
+            let d = rng.vec4(-1.0, 1.0);
+            ctx.light(light, GL_SPOT_DIRECTION, &[d.x, d.y, d.z])
+                .unwrap();
+            ctx.light(light, GL_SPOT_CUTOFF, &[rng.uniform(5.0, 90.0)])
+                .unwrap();
+            ctx.light(light, GL_SPOT_EXPONENT, &[rng.exponent()])
+                .unwrap();
+        }
+        if rng.coin() {
+            ctx.light(light, GL_CONSTANT_ATTENUATION, &[rng.uniform(0.5, 2.0)])
+                .unwrap();
+            ctx.light(light, GL_LINEAR_ATTENUATION, &[rng.uniform(0.0, 1.0)])
+                .unwrap();
+            ctx.light(light, GL_QUADRATIC_ATTENUATION, &[rng.uniform(0.0, 0.5)])
+                .unwrap();
+        }
+    }
+    ctx.load_identity().unwrap();
+    ctx.translate(0.0, 0.0, f64::from(rng.uniform(-4.0, 0.0)))
+        .unwrap();
+    if rng.coin() {
+        ctx.scale(1.0, f64::from(rng.uniform(0.5, 2.0)), 1.0)
+            .unwrap();
+    }
+    ctx.matrix_mode(GL_PROJECTION).unwrap();
+    ctx.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0).unwrap();
+    ctx.matrix_mode(GL_TEXTURE).unwrap();
+    ctx.rotate(30.0, 0.0, 0.0, 1.0).unwrap();
+    for face in [GL_FRONT, GL_BACK] {
+        for pname in [GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION] {
+            ctx.material(face, pname, &rng.vec4(0.0, 1.0).to_array())
+                .unwrap();
+        }
+        ctx.material(face, GL_SHININESS, &[rng.exponent()]).unwrap();
+    }
+    let flag = |rng: &mut Rng| if rng.coin() { 1.0 } else { 0.0 };
+    ctx.light_model(GL_LIGHT_MODEL_TWO_SIDE, &[flag(rng)])
+        .unwrap();
+    ctx.light_model(GL_LIGHT_MODEL_LOCAL_VIEWER, &[flag(rng)])
+        .unwrap();
+    let separate = if rng.coin() {
+        GL_SEPARATE_SPECULAR_COLOR
+    } else {
+        GL_SINGLE_COLOR
+    };
+    ctx.light_model(GL_LIGHT_MODEL_COLOR_CONTROL, &[separate as f32])
+        .unwrap();
+    ctx.light_model(GL_LIGHT_MODEL_AMBIENT, &rng.vec4(0.0, 0.5).to_array())
+        .unwrap();
+    let faces = [GL_FRONT, GL_BACK, GL_FRONT_AND_BACK];
+    let modes = [
+        GL_AMBIENT,
+        GL_DIFFUSE,
+        GL_SPECULAR,
+        GL_EMISSION,
+        GL_AMBIENT_AND_DIFFUSE,
+    ];
+    ctx.color_material(
+        faces[(rng.next() % 3) as usize],
+        modes[(rng.next() % 5) as usize],
+    )
+    .unwrap();
+    on(&mut ctx, GL_COLOR_MATERIAL, rng.coin());
+    on(&mut ctx, GL_NORMALIZE, rng.coin());
+    on(&mut ctx, GL_RESCALE_NORMAL, rng.coin());
+    ctx
+}
+
+fn random_vertex(rng: &mut Rng) -> (Vec4, CurrentAttribs) {
+    let mut position = rng.vec4(-2.0, 2.0);
+    position.w = if rng.next() % 4 == 0 {
+        rng.uniform(0.5, 2.0)
+    } else {
+        1.0
+    };
+    let attribs = CurrentAttribs {
+        color: rng.vec4(0.0, 1.0),
+        secondary_color: rng.vec4(0.0, 1.0),
+        normal: Vec3::new(
+            rng.uniform(-2.0, 2.0),
+            rng.uniform(-2.0, 2.0),
+            rng.uniform(-2.0, 2.0),
+        ),
+        tex_coord: rng.vec4(-1.0, 1.0),
+        edge_flag: rng.coin(),
+    };
+    (position, attribs)
+}
+
+#[test]
+fn blocks_equal_the_scalar_path_on_random_states() {
+    let mut rng = Rng(2024);
+    let mut lanes_checked = 0;
+    for state in 0..600 {
+        let mut ctx = random_state(&mut rng);
+        let derived = ctx.derived().clone();
+        let mut inputs = [InputBlock::default(); 3];
+        let mut expected = Vec::new();
+        for block in &mut inputs {
+            let len = 1 + (rng.next() as usize) % LANES;
+            for _ in 0..len {
+                let (position, attribs) = random_vertex(&mut rng);
+                block.push(position, &attribs);
+                expected.push(derived.process(position, &attribs));
+            }
+        }
+        let mut outputs = [OutputBlock::default(); 3];
+        process_blocks(&derived, &inputs, &mut outputs);
+        let got: Vec<_> = outputs
+            .iter()
+            .flat_map(|o| (0..o.len).map(|lane| o.vertex(lane)))
+            .collect();
+        assert_eq!(got.len(), expected.len());
+        for (k, (got, want)) in got.iter().zip(&expected).enumerate() {
+            assert_eq!(got, want, "state {state}, vertex {k}");
+        }
+        lanes_checked += got.len();
+    }
+    assert!(lanes_checked > 3000);
+}
+
+#[test]
+fn non_finite_inputs_give_clamped_colors() {
+    let mut rng = Rng(7);
+    let specials = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 1e30, -1e30, 0.0];
+    for state in 0..200 {
+        let mut ctx = random_state(&mut rng);
+        let derived = ctx.derived().clone();
+        let mut input = InputBlock::default();
+        for lane in 0..LANES {
+            let (mut position, mut attribs) = random_vertex(&mut rng);
+            let special = specials[(rng.next() % 6) as usize];
+            match lane % 4 {
+                0 => position.x = special,
+                1 => position.w = special,
+                2 => attribs.normal.y = special,
+                _ => attribs.color.z = special,
+            }
+            input.push(position, &attribs);
+        }
+        let mut output = [OutputBlock::default()];
+        process_blocks(&derived, &[input], &mut output);
+        for lane in 0..LANES {
+            let v = output[0].vertex(lane);
+            for c in [v.colors.front, v.colors.back] {
+                for value in c.primary.to_array().iter().chain(&c.secondary.to_array()) {
+                    assert!(
+                        (0.0..=1.0).contains(value),
+                        "state {state} lane {lane}: {v:?}"
+                    );
+                }
+            }
+        }
+    }
+}
