@@ -30,11 +30,6 @@ typedef double GLclampd;
 #endif
 
 /*
- At most this many threads, whatever is asked.
- */
-#define MAX_THREADS 256
-
-/*
  A context as applications hold it (`FflContext *` in C).
  */
 typedef struct FflContext FflContext;
@@ -997,6 +992,8 @@ typedef struct FflCapturedPrimitive {
 #ifndef GL_TEXTURE_GEN_Q
 #define GL_TEXTURE_GEN_Q 3171
 #endif
+
+
 
 
 

@@ -20,7 +20,7 @@ pub use prepared::{PreparedFace, PreparedLight, PreparedLighting};
 use glam::{DVec3, DVec4, Vec4};
 
 /// The colors lighting gives one face of a vertex (§2.14.1): primary and secondary, clamped.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct FaceColors {
     pub primary: Vec4,
     pub secondary: Vec4,
@@ -28,7 +28,7 @@ pub struct FaceColors {
 
 /// The colors of a vertex for both faces. Without two-sided lighting the back colors equal the
 /// front ones (§2.14.1: the front colors are used for every polygon).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct LitVertex {
     pub front: FaceColors,
     pub back: FaceColors,

@@ -42,83 +42,115 @@ fn triangle(vertices: [usize; 3], boundary: [bool; 3], edge_flags: bool, reset: 
 /// Calls `emit` for each primitive `mode` makes of `count` vertices, in order. Incomplete
 /// primitives are dropped (§2.6.1); an unknown mode makes nothing.
 pub fn assemble(mode: GLenum, count: usize, mut emit: impl FnMut(Primitive)) {
-    match mode {
-        GL_POINTS => (0..count).for_each(|i| emit(Primitive::Point(i))),
-        GL_LINES => (0..count / 2).for_each(|i| {
-            emit(Primitive::Line {
-                vertices: [2 * i, 2 * i + 1],
+    let mut assembler = Assembler::new(mode);
+    for _ in 0..count {
+        assembler.push(&mut emit);
+    }
+    assembler.finish(&mut emit);
+}
+
+/// Primitive assembly one vertex at a time, for draws that are never held whole: `push`
+/// announces the next vertex and emits the primitives it completes, `finish` the ones the
+/// end of the draw completes (a loop's closing segment, a polygon's last triangle). A
+/// primitive only refers to vertex 0 and the last four vertices pushed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Assembler {
+    mode: GLenum,
+    /// Vertices pushed so far.
+    count: usize,
+}
+
+impl Assembler {
+    pub fn new(mode: GLenum) -> Assembler {
+        Assembler { mode, count: 0 }
+    }
+
+    pub fn mode(&self) -> GLenum {
+        self.mode
+    }
+
+    /// Vertices pushed so far.
+    pub fn count(&self) -> usize {
+        self.count
+    }
+
+    /// Vertex number `count()` arrives.
+    pub fn push(&mut self, mut emit: impl FnMut(Primitive)) {
+        let i = self.count;
+        self.count += 1;
+        match self.mode {
+            GL_POINTS => emit(Primitive::Point(i)),
+            GL_LINES if i % 2 == 1 => emit(Primitive::Line {
+                vertices: [i - 1, i],
                 reset: true,
-            })
-        }),
-        GL_LINE_STRIP | GL_LINE_LOOP if count >= 2 => {
-            for i in 1..count {
-                emit(Primitive::Line {
-                    vertices: [i - 1, i],
-                    reset: i == 1,
-                });
+            }),
+            GL_LINE_STRIP | GL_LINE_LOOP if i >= 1 => emit(Primitive::Line {
+                vertices: [i - 1, i],
+                reset: i == 1,
+            }),
+            GL_TRIANGLES if i % 3 == 2 => emit(triangle([i - 2, i - 1, i], ALL_EDGES, true, true)),
+            GL_TRIANGLE_STRIP if i >= 2 => {
+                // Odd triangles swap their first two vertices to keep the strip's orientation.
+                let j = i - 2;
+                let vertices = if j % 2 == 0 {
+                    [j, j + 1, j + 2]
+                } else {
+                    [j + 1, j, j + 2]
+                };
+                emit(triangle(vertices, ALL_EDGES, false, true))
             }
-            if mode == GL_LINE_LOOP {
-                emit(Primitive::Line {
-                    vertices: [count - 1, 0],
-                    reset: false,
-                });
-            }
-        }
-        GL_TRIANGLES => (0..count / 3).for_each(|i| {
-            let v = 3 * i;
-            emit(triangle([v, v + 1, v + 2], ALL_EDGES, true, true))
-        }),
-        GL_TRIANGLE_STRIP => (0..count.saturating_sub(2)).for_each(|i| {
-            // Odd triangles swap their first two vertices to keep the strip's orientation.
-            let vertices = if i % 2 == 0 {
-                [i, i + 1, i + 2]
-            } else {
-                [i + 1, i, i + 2]
-            };
-            emit(triangle(vertices, ALL_EDGES, false, true))
-        }),
-        GL_TRIANGLE_FAN => (0..count.saturating_sub(2))
-            .for_each(|i| emit(triangle([0, i + 1, i + 2], ALL_EDGES, false, true))),
-        GL_QUADS => (0..count / 4).for_each(|i| {
-            let v = 4 * i;
-            emit(triangle([v, v + 1, v + 3], [true, false, true], true, true));
-            emit(triangle(
-                [v + 1, v + 2, v + 3],
-                [true, true, false],
-                true,
-                false,
-            ));
-        }),
-        GL_QUAD_STRIP => (0..count.saturating_sub(2) / 2).for_each(|i| {
-            let v = 2 * i;
-            emit(triangle(
-                [v + 2, v, v + 3],
-                [true, false, true],
-                false,
-                true,
-            ));
-            emit(triangle(
-                [v, v + 1, v + 3],
-                [true, true, false],
-                false,
-                false,
-            ));
-        }),
-        GL_POLYGON if count >= 3 => {
-            // A fan around vertex 0, which comes last in each triangle: it provokes.
-            for i in 0..count - 2 {
-                let first = i == 0;
-                let last = i + 3 == count;
+            GL_TRIANGLE_FAN if i >= 2 => emit(triangle([0, i - 1, i], ALL_EDGES, false, true)),
+            GL_QUADS if i % 4 == 3 => {
+                let v = i - 3;
+                emit(triangle([v, v + 1, v + 3], [true, false, true], true, true));
                 emit(triangle(
-                    [i + 1, i + 2, 0],
-                    [true, last, first],
+                    [v + 1, v + 2, v + 3],
+                    [true, true, false],
                     true,
-                    first,
+                    false,
                 ));
             }
+            GL_QUAD_STRIP if i >= 3 && i % 2 == 1 => {
+                let v = i - 3;
+                emit(triangle(
+                    [v + 2, v, v + 3],
+                    [true, false, true],
+                    false,
+                    true,
+                ));
+                emit(triangle(
+                    [v, v + 1, v + 3],
+                    [true, true, false],
+                    false,
+                    false,
+                ));
+            }
+            // The triangle of vertices i - 2 and i - 1 is known not to be the last one only
+            // now: its closing edge is a polygon edge only if it is.
+            GL_POLYGON if i >= 3 => emit(polygon_triangle(i - 3, false)),
+            _ => {}
         }
-        _ => {}
     }
+
+    /// The draw ends.
+    pub fn finish(&mut self, mut emit: impl FnMut(Primitive)) {
+        let count = self.count;
+        match self.mode {
+            GL_LINE_LOOP if count >= 2 => emit(Primitive::Line {
+                vertices: [count - 1, 0],
+                reset: false,
+            }),
+            GL_POLYGON if count >= 3 => emit(polygon_triangle(count - 3, true)),
+            _ => {}
+        }
+    }
+}
+
+/// Triangle `k` of a polygon: a fan around vertex 0, which comes last in each triangle and
+/// so provokes.
+fn polygon_triangle(k: usize, last: bool) -> Primitive {
+    let first = k == 0;
+    triangle([k + 1, k + 2, 0], [true, last, first], true, first)
 }
 
 #[cfg(test)]

@@ -8,7 +8,8 @@
 //! (`assembly::assemble` decides both), a segment or triangle's provoking vertex is its last.
 //! Capture only observes: glRenderMode(GL_FEEDBACK) still gets its tokens.
 
-use super::assembly::{Primitive, assemble};
+use super::VertexWindow;
+use super::assembly::Primitive;
 use super::vertex::ProcessedVertex;
 use crate::gl::*;
 
@@ -41,13 +42,7 @@ impl CapturedPrimitive {
         }
     }
 
-    fn of(
-        primitive: Primitive,
-        base: usize,
-        draw: usize,
-        mode: GLenum,
-        vertices: &[ProcessedVertex],
-    ) -> Self {
+    fn of(primitive: Primitive, draw: &CapturedDraw, window: &VertexWindow) -> Self {
         let (kind, indices, edges) = match primitive {
             Primitive::Point(a) => (GL_POINTS, [a, 0, 0], [false; 3]),
             Primitive::Line {
@@ -60,24 +55,32 @@ impl CapturedPrimitive {
                 ..
             } => {
                 let edges = std::array::from_fn(|k| {
-                    boundary[k] && (!edge_flags || vertices[corners[k]].edge_flag)
+                    boundary[k] && (!edge_flags || window.get(corners[k]).edge_flag)
                 });
                 (GL_TRIANGLES, corners, edges)
             }
         };
         let mut captured = CapturedPrimitive {
             kind,
-            mode,
-            draw,
+            mode: draw.mode,
+            draw: draw.index,
             vertices: [0; 3],
             edges,
         };
         let used = captured.vertex_count();
         for (vertex, index) in captured.vertices.iter_mut().zip(indices).take(used) {
-            *vertex = base + index;
+            *vertex = draw.first_vertex + index;
         }
         captured
     }
+}
+
+/// A draw being captured: its number, mode and where its vertices start.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CapturedDraw {
+    index: usize,
+    mode: GLenum,
+    first_vertex: usize,
 }
 
 /// What capture collected: every vertex given to a draw (vertex i of a draw is
@@ -123,18 +126,33 @@ impl Capture {
         self.draws
     }
 
-    /// Appends one draw's vertices and the primitives `mode` assembles from them.
-    pub(crate) fn record(&mut self, mode: GLenum, vertices: &[ProcessedVertex]) {
+    /// A draw of `mode` starts; `None` when capture is off.
+    pub(crate) fn begin_draw(&mut self, mode: GLenum) -> Option<CapturedDraw> {
         if !self.active {
-            return;
+            return None;
         }
-        let base = self.vertices.len();
-        let draw = self.draws;
-        self.vertices.extend_from_slice(vertices);
-        assemble(mode, vertices.len(), |primitive| {
-            self.primitives
-                .push(CapturedPrimitive::of(primitive, base, draw, mode, vertices))
-        });
+        let draw = CapturedDraw {
+            index: self.draws,
+            mode,
+            first_vertex: self.vertices.len(),
+        };
         self.draws += 1;
+        Some(draw)
+    }
+
+    /// The draw's next vertex.
+    pub(crate) fn push_vertex(&mut self, vertex: &ProcessedVertex) {
+        self.vertices.push(*vertex);
+    }
+
+    /// A primitive of `draw`, whose vertices `window` holds.
+    pub(crate) fn push_primitive(
+        &mut self,
+        primitive: Primitive,
+        draw: &CapturedDraw,
+        window: &VertexWindow,
+    ) {
+        self.primitives
+            .push(CapturedPrimitive::of(primitive, draw, window));
     }
 }

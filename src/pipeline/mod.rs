@@ -17,10 +17,62 @@ use glam::Vec4;
 use crate::context::{Context, RenderMode};
 use crate::gl::*;
 use crate::lighting::FaceColors;
-use assembly::{Primitive, assemble};
+use assembly::{Assembler, Primitive};
 use clip::{ClipPlanes, PolygonVertex, clip_line, clip_triangle, point_visible};
 use feedback::FeedbackVertex;
 use vertex::ProcessedVertex;
+
+/// The vertices of a draw that its next primitives may still refer to: vertex 0 and the last
+/// four (`Assembler`'s promise), so a draw of any size is held in a fixed space.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct VertexWindow {
+    first: ProcessedVertex,
+    recent: [ProcessedVertex; 4],
+}
+
+impl VertexWindow {
+    fn put(&mut self, index: usize, vertex: &ProcessedVertex) {
+        if index == 0 {
+            self.first = *vertex;
+        }
+        self.recent[index % 4] = *vertex;
+    }
+
+    /// Vertex `index` of the draw: 0 or one of the last four put.
+    pub fn get(&self, index: usize) -> &ProcessedVertex {
+        if index == 0 {
+            &self.first
+        } else {
+            &self.recent[index % 4]
+        }
+    }
+}
+
+/// The primitives one vertex completes: at most two (a quadrilateral's triangles).
+#[derive(Default)]
+struct Completed {
+    primitives: [Option<Primitive>; 2],
+}
+
+impl Completed {
+    fn add(&mut self, primitive: Primitive) {
+        let free = self.primitives.iter_mut().find(|p| p.is_none());
+        *free.expect("a vertex completes at most two primitives") = Some(primitive);
+    }
+
+    fn for_each(self, f: impl FnMut(Primitive)) {
+        self.primitives.into_iter().flatten().for_each(f);
+    }
+}
+
+/// A draw in progress: assembly state, the vertices primitives may still use, the clip
+/// planes, and the capture's record of the draw when capture is on.
+pub struct DrawStream {
+    assembler: Assembler,
+    window: VertexWindow,
+    planes: ClipPlanes,
+    capture: Option<capture::CapturedDraw>,
+}
 
 /// What feedback needs of a vertex after its colors were chosen.
 fn feedback_vertex(ctx: &Context, v: &ProcessedVertex, color: Vec4) -> FeedbackVertex {
@@ -53,39 +105,82 @@ impl Context {
         self.render_mode == RenderMode::Select
     }
 
-    /// Assembles the primitives of `mode` from processed vertices and sends them on (§2.6.1).
-    pub(crate) fn draw_vertices(&mut self, mode: GLenum, vertices: &[ProcessedVertex]) {
-        self.capture.record(mode, vertices);
-        if self.render_mode == RenderMode::Render {
-            return;
+    /// Starts a draw of `mode` whose processed vertices `stream_vertex` receives one by one.
+    pub(crate) fn begin_stream(&mut self, mode: GLenum) -> DrawStream {
+        DrawStream {
+            assembler: Assembler::new(mode),
+            window: VertexWindow::default(),
+            planes: self.clip_planes(),
+            capture: self.capture.begin_draw(mode),
         }
-        let planes = self.clip_planes();
+    }
+
+    /// The next vertex of the draw: captured, and assembled into the primitives it completes,
+    /// which are clipped and fed back or selected (§2.6.1).
+    pub(crate) fn stream_vertex(&mut self, stream: &mut DrawStream, vertex: &ProcessedVertex) {
+        stream.window.put(stream.assembler.count(), vertex);
+        if stream.capture.is_some() {
+            self.capture.push_vertex(vertex);
+        }
+        let mut completed = Completed::default();
+        stream.assembler.push(|p| completed.add(p));
+        completed.for_each(|p| self.route(stream, p));
+    }
+
+    /// The draw ends: the primitives its end completes are sent on.
+    pub(crate) fn end_stream(&mut self, mut stream: DrawStream) {
+        let mut completed = Completed::default();
+        stream.assembler.finish(|p| completed.add(p));
+        completed.for_each(|p| self.route(&stream, p));
+    }
+
+    /// A completed primitive to capture, and to clipping and feedback or selection.
+    fn route(&mut self, stream: &DrawStream, primitive: Primitive) {
+        if let Some(draw) = &stream.capture {
+            self.capture.push_primitive(primitive, draw, &stream.window);
+        }
+        if self.render_mode != RenderMode::Render {
+            self.send_primitive(&stream.planes, &stream.window, primitive);
+        }
+    }
+
+    /// Assembles the primitives of `mode` from processed vertices and sends them on.
+    pub(crate) fn draw_vertices(&mut self, mode: GLenum, vertices: &[ProcessedVertex]) {
+        let mut stream = self.begin_stream(mode);
+        for vertex in vertices {
+            self.stream_vertex(&mut stream, vertex);
+        }
+        self.end_stream(stream);
+    }
+
+    /// One assembled primitive to clipping, culling and feedback or selection.
+    fn send_primitive(&mut self, planes: &ClipPlanes, window: &VertexWindow, primitive: Primitive) {
         let mut polygon = Vec::new();
-        assemble(mode, vertices.len(), |primitive| match primitive {
-            Primitive::Point(i) => self.feedback_point(&planes, &vertices[i]),
+        match primitive {
+            Primitive::Point(i) => self.feedback_point(planes, window.get(i)),
             Primitive::Line {
                 vertices: [a, b],
                 reset,
-            } => self.feedback_line(&planes, [&vertices[a], &vertices[b]], reset),
+            } => self.feedback_line(planes, [window.get(a), window.get(b)], reset),
             Primitive::Triangle {
                 vertices: [a, b, c],
                 boundary,
                 edge_flags,
                 reset,
             } => {
-                let mut corners = [vertices[a], vertices[b], vertices[c]];
+                let mut corners = [*window.get(a), *window.get(b), *window.get(c)];
                 if !edge_flags {
                     // Strips and fans draw every edge whatever the edge flags (§2.6.2).
                     corners.iter_mut().for_each(|v| v.edge_flag = true);
                 }
                 let [a, b, c] = &corners;
-                if clip_triangle(&planes, [a, b, c], boundary, &mut polygon) {
+                if clip_triangle(planes, [a, b, c], boundary, &mut polygon) {
                     self.feedback_polygon(&polygon, c);
                 } else {
                     self.feedback_triangle([a, b, c], boundary, c, reset);
                 }
             }
-        });
+        }
     }
 
     /// A point: culled unless inside every plane; points always use the front colors.

@@ -29,7 +29,7 @@ impl Default for CurrentAttribs {
 }
 
 /// A vertex after transformation and lighting, ready for primitive assembly.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ProcessedVertex {
     pub eye: Vec4,
     pub clip: Vec4,
