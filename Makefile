@@ -49,6 +49,9 @@ demo: build
 # reported, not an error; a crash or a wrong feedback count is. BENCH_FLAGS=--vertices=N
 # runs smaller scenes quickly.
 BENCH_PACKAGES := python3-matplotlib
+# Debian's interpreter, the one python3-matplotlib installs for (python3 on PATH may be a
+# pyenv or virtualenv one).
+BENCH_PYTHON := /usr/bin/python3
 BENCH_DIR := target/bench
 BENCH_CFLAGS := $(CFLAGS_STRICT) -O2 -Iinclude
 
@@ -58,7 +61,7 @@ bench:
 	@mkdir -p $(BENCH_DIR)
 	$(CC) $(BENCH_CFLAGS) examples/bench/bench.c target/release/libfflight.a -lm -lpthread -ldl -o $(BENCH_DIR)/bench_fflight
 	$(CC) $(BENCH_CFLAGS) -DUSE_OSMESA examples/bench/bench.c -lOSMesa -lm -o $(BENCH_DIR)/bench_osmesa
-	python3 examples/bench/run.py $(BENCH_DIR) $(BENCH_FLAGS)
+	$(BENCH_PYTHON) examples/bench/run.py $(BENCH_DIR) $(BENCH_FLAGS)
 
 clean:
 	$(CARGO) clean

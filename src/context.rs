@@ -1,12 +1,16 @@
 //! The GL context: all state of one rendering context, and the per-thread current context.
 
+use std::sync::Arc;
+
 use glam::Vec4;
 
 use crate::error::{ErrorFlag, GlError, GlResult};
 use crate::gl::*;
 use crate::lighting::PreparedLighting;
+use crate::pipeline::DrawStream;
+use crate::pipeline::block::InputBlock;
 use crate::pipeline::feedback::FeedbackBuffer;
-use crate::pipeline::vertex::{CurrentAttribs, DerivedState, ProcessedVertex, VertexTransform};
+use crate::pipeline::vertex::{CurrentAttribs, DerivedState, VertexTransform};
 use crate::state::enables::Enables;
 use crate::state::light::{Light, MAX_LIGHTS};
 use crate::state::light_model::LightModel;
@@ -22,11 +26,13 @@ pub enum RenderMode {
     Select,
 }
 
-/// The primitive being specified between glBegin and glEnd.
-#[derive(Clone, Debug, PartialEq)]
+/// The primitive being specified between glBegin and glEnd: the vertices not processed yet
+/// (a block is processed when it fills, before a glMaterial, and at glEnd) and the draw they
+/// stream into.
+#[derive(Clone, Debug)]
 pub struct PrimitiveInProgress {
-    pub mode: GLenum,
-    pub vertices: Vec<ProcessedVertex>,
+    pub(crate) pending: InputBlock,
+    pub(crate) stream: DrawStream,
 }
 
 /// One GL context. Every GL command is a method; state changes that affect vertex processing
@@ -51,7 +57,7 @@ pub struct Context {
     pub(crate) primitive: Option<PrimitiveInProgress>,
     pub(crate) arrays: crate::state::arrays::VertexArrays,
     pub(crate) capture: crate::pipeline::capture::Capture,
-    derived: Option<DerivedState>,
+    derived: Option<Arc<DerivedState>>,
 }
 
 impl Default for Context {
@@ -136,8 +142,18 @@ impl Context {
 
     /// The derived per-vertex constants, rebuilt if a state change made them stale.
     pub fn derived(&mut self) -> &DerivedState {
+        self.shared_derived_ref()
+    }
+
+    /// The derived constants as a shared handle, for draws that go on using them while
+    /// they change the context (feedback, capture).
+    pub(crate) fn shared_derived(&mut self) -> Arc<DerivedState> {
+        self.shared_derived_ref().clone()
+    }
+
+    fn shared_derived_ref(&mut self) -> &Arc<DerivedState> {
         if self.derived.is_none() {
-            self.derived = Some(self.build_derived());
+            self.derived = Some(Arc::new(self.build_derived()));
         }
         self.derived.as_ref().expect("just built")
     }

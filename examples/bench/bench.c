@@ -25,7 +25,9 @@
 #define BATCH 4096 /* vertices per glBegin/glEnd in immediate mode */
 #define WARMUP 1000 /* vertices of the call that brings a memory scene to its baseline */
 
-static GLfloat *positions, *normals, *out_a, *out_b;
+static GLfloat *positions, *normals;
+static GLfloat *out_a; /* the feedback buffer, or fflLightVertices' clip positions */
+static GLfloat *out_b; /* fflLightVertices' front colors */
 static GLuint *indices;
 static GLint vertices, triangles;
 
@@ -44,12 +46,14 @@ static void *allocate(size_t floats)
     return p;
 }
 
-/* Our own generator, so both builds see the same data whatever the C library. */
+/* Our own generator, so both builds see the same data whatever the C library; every scene
+ * starts from the same seed, whatever ran before it. */
+static uint32_t lcg_state;
+
 static float lcg(void)
 {
-    static uint32_t state = 12345u;
-    state = state * 1664525u + 1013904223u;
-    return (float)(state >> 8) * (1.0f / 16777216.0f);
+    lcg_state = lcg_state * 1664525u + 1013904223u;
+    return (float)(lcg_state >> 8) * (1.0f / 16777216.0f);
 }
 
 /* A normal of length 0.5 to 2, so that GL_NORMALIZE has work to do. */
@@ -64,6 +68,7 @@ static void set_normal(GLfloat *n, float x, float y, float z)
 static void fill_points(GLint n)
 {
     GLint i;
+    lcg_state = 12345u;
     vertices = n;
     positions = allocate(3 * (size_t)n);
     normals = allocate(3 * (size_t)n);
@@ -83,6 +88,7 @@ static void fill_grid(GLint n)
 {
     GLint side = (GLint)(sqrt((double)n) + 0.5), i, j;
     GLuint *t;
+    lcg_state = 12345u;
     if (side < 2)
         fail("a mesh needs at least 4 vertices");
     vertices = side * side;

@@ -12,6 +12,7 @@ reported, not an error; the exit status is 1 when a program fails (crash, GL err
 feedback count) or the plot cannot be made.
 """
 import argparse
+import csv
 import os
 import shutil
 import subprocess
@@ -114,23 +115,27 @@ def memory_rows(fflight, vertices):
 
 def plot(osmesa, fflight, vertices, out_dir, title):
     """ns per vertex for scene 1's draw with the first k of the 8 spot lights, k = 1..8."""
-    lines = {"OSMesa": (osmesa, None), "fflight, 1 thread": (fflight, 1),
-             "fflight, all threads": (fflight, None)}
-    table = [["lights"] + list(lines)]
+    lines = [(osmesa, None), (fflight, 1), (fflight, None)]
+    table, threads = [], 0
     for k in range(1, 9):
-        row = [str(k)]
-        for binary, threads in lines.values():
-            r = run(binary, f"lights_{k}", vertices, PLOT_RUNS, threads)
+        row = [k]
+        for binary, count in lines:
+            r = run(binary, f"lights_{k}", vertices, PLOT_RUNS, count)
             if r is None:
-                return
+                return None
             row.append(f"{r['ns_per_vertex']:.3f}")
+            if binary is fflight and count is None:
+                threads = int(r["threads"])
         table.append(row)
+    table.insert(0, ["lights", "OSMesa", "fflight, 1 thread",
+                     f"fflight, all threads ({threads})"])
     data, png = out_dir / "lights.csv", out_dir / "lights.png"
-    data.write_text("".join(",".join(row) + "\n" for row in table))
+    with open(data, "w", newline="") as f:
+        csv.writer(f).writerows(table)
     script = Path(__file__).with_name("plot.py")
     if subprocess.run([sys.executable, str(script), str(data), str(png), title]).returncode:
         failures.append("plot.py failed")
-        return
+        return None
     docs = Path(__file__).resolve().parents[2] / "docs" / "bench-lights.png"
     shutil.copyfile(png, docs)
     return png, docs
@@ -139,7 +144,7 @@ def plot(osmesa, fflight, vertices, out_dir, title):
 def text_table(rows):
     widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
     return "\n".join("  ".join(cell.ljust(w) if i in (0, 4, 5) else cell.rjust(w)
-                               for i, (cell, w) in enumerate(zip(row, widths)))
+                               for i, (cell, w) in enumerate(zip(row, widths))).rstrip()
                      for row in rows)
 
 

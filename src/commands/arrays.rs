@@ -19,7 +19,10 @@ use glam::{Vec3, Vec4};
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
-use crate::pipeline::vertex::CurrentAttribs;
+use crate::lighting::batch::process_blocks;
+use crate::lighting::lanes::LANES;
+use crate::pipeline::block::{InputBlock, OutputBlock};
+use crate::pipeline::fetch::ArrayFetch;
 use crate::state::arrays::{ArrayKind, ByteSpan, ClientArray, VertexArrays};
 
 /// The size of one index of glDrawElements' `type`; `None` for an invalid type.
@@ -131,19 +134,6 @@ struct Element {
     color: Option<Vec4>,
     tex_coord: Option<Vec4>,
     edge_flag: Option<bool>,
-}
-
-impl Element {
-    /// The attributes a glVertex would see after this element's glNormal, glColor ... calls.
-    fn attribs(&self, current: &CurrentAttribs) -> CurrentAttribs {
-        CurrentAttribs {
-            normal: self.normal.unwrap_or(current.normal),
-            color: self.color.unwrap_or(current.color),
-            tex_coord: self.tex_coord.unwrap_or(current.tex_coord),
-            edge_flag: self.edge_flag.unwrap_or(current.edge_flag),
-            ..*current
-        }
-    }
 }
 
 /// Decodes elements of the enabled arrays from sources checked to hold them.
@@ -425,18 +415,36 @@ impl Context {
             return Ok(());
         };
         let reader = ArrayReader::new(&arrays, sources, first, last)?;
-        let mut vertices = Vec::new();
-        vertices
-            .try_reserve_exact(indices.len())
-            .map_err(|_| GlError::OutOfMemory)?;
-        let current = self.current;
-        let derived = self.derived();
-        indices.for_each(|index| {
-            let element = reader.element(index);
-            let position = element.position.expect("the vertex array is enabled");
-            vertices.push(derived.process(position, &element.attribs(&current)));
-        });
-        self.draw_vertices(mode, &vertices);
+        let fetch = ArrayFetch::new(reader.base, reader.arrays);
+        self.draw_arrays_with(mode, &fetch, indices);
         Ok(())
+    }
+
+    /// The vertices of `indices`, a block at a time: fetched, processed by the batch engine
+    /// and streamed into primitive assembly.
+    fn draw_arrays_with(&mut self, mode: GLenum, fetch: &ArrayFetch, indices: &ElementIndices) {
+        let derived = self.shared_derived();
+        let mut input = InputBlock::with_attribs(&self.current);
+        let mut output = [OutputBlock::default()];
+        let mut stream = self.begin_stream(mode);
+        let mut block = [0; LANES];
+        let mut len = 0;
+        let mut run_block = |ctx: &mut Context, block: &[usize]| {
+            fetch.fill(&mut input, block);
+            process_blocks(&derived, std::slice::from_ref(&input), &mut output);
+            for lane in 0..block.len() {
+                ctx.stream_vertex(&mut stream, &output[0].vertex(lane));
+            }
+        };
+        indices.for_each(|index| {
+            block[len] = index;
+            len += 1;
+            if len == LANES {
+                run_block(self, &block);
+                len = 0;
+            }
+        });
+        run_block(self, &block[..len]);
+        self.end_stream(stream);
     }
 }

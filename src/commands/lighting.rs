@@ -137,6 +137,9 @@ impl Context {
         if pname == GL_SHININESS && !(0.0..=128.0).contains(&values.x) {
             return Err(GlError::InvalidValue);
         }
+        // Vertices given before this glMaterial are lit with the material they were given
+        // with.
+        self.flush_vertices();
         let tracked = self.color_material.tracked();
         for face in [FRONT, BACK] {
             if faces[face] {

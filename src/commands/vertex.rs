@@ -5,6 +5,8 @@ use glam::{Vec3, Vec4};
 use crate::context::{Context, PrimitiveInProgress};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
+use crate::lighting::batch::process_blocks;
+use crate::pipeline::block::{InputBlock, OutputBlock};
 
 impl Context {
     /// glColor: also sets the material properties that an enabled color material tracks.
@@ -36,30 +38,58 @@ impl Context {
         if mode > GL_POLYGON {
             return Err(GlError::InvalidEnum);
         }
+        let stream = self.begin_stream(mode);
         self.primitive = Some(PrimitiveInProgress {
-            mode,
-            vertices: Vec::new(),
+            pending: InputBlock::default(),
+            stream,
         });
         Ok(())
     }
 
-    /// glEnd: assembles the primitives of the vertices given since glBegin.
+    /// glEnd: the last vertices are processed and the draw ends.
     pub fn end(&mut self) -> GlResult {
+        self.flush_vertices();
         let primitive = self.primitive.take().ok_or(GlError::InvalidOperation)?;
-        self.draw_vertices(primitive.mode, &primitive.vertices);
+        self.end_stream(primitive.stream);
         Ok(())
     }
 
-    /// glVertex: the vertex is transformed and lit with the current attributes now. Outside
-    /// glBegin/glEnd it has no effect (§2.6.3 leaves it undefined).
+    /// glVertex: the vertex joins the block of pending vertices with the current attributes;
+    /// a full block is transformed, lit and assembled. Outside glBegin/glEnd it has no effect
+    /// (§2.6.3 leaves it undefined).
     pub fn vertex(&mut self, object: Vec4) {
-        if self.primitive.is_none() || !self.vertices_observed() {
+        if !self.vertices_observed() {
             return;
         }
-        let attribs = self.current;
-        let vertex = self.derived().process(object, &attribs);
-        if let Some(primitive) = &mut self.primitive {
-            primitive.vertices.push(vertex);
+        let Some(primitive) = &mut self.primitive else {
+            return;
+        };
+        primitive.pending.push(object, &self.current);
+        if primitive.pending.is_full() {
+            self.flush_vertices();
         }
+    }
+
+    /// Processes the pending vertices of the primitive in progress, in order, with the state
+    /// in force: before anything changes that state between glBegin and glEnd (glMaterial),
+    /// when the block fills, and at glEnd.
+    pub(crate) fn flush_vertices(&mut self) {
+        let Some(mut primitive) = self.primitive.take() else {
+            return;
+        };
+        if primitive.pending.len > 0 {
+            let derived = self.shared_derived();
+            let mut output = [OutputBlock::default()];
+            process_blocks(
+                &derived,
+                std::slice::from_ref(&primitive.pending),
+                &mut output,
+            );
+            for lane in 0..output[0].len {
+                self.stream_vertex(&mut primitive.stream, &output[0].vertex(lane));
+            }
+            primitive.pending.len = 0;
+        }
+        self.primitive = Some(primitive);
     }
 }

@@ -20,6 +20,7 @@ const VIEW_VOLUME: [Vec4; 6] = [
 ];
 
 /// The planes a vertex is tested against: the view volume and the enabled user planes.
+#[derive(Clone, Debug)]
 pub struct ClipPlanes {
     user: Vec<DVec4>,
 }

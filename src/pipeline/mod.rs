@@ -9,6 +9,7 @@ pub mod block;
 pub mod capture;
 pub mod clip;
 pub mod feedback;
+pub mod fetch;
 pub mod select;
 pub mod vertex;
 
@@ -67,6 +68,7 @@ impl Completed {
 
 /// A draw in progress: assembly state, the vertices primitives may still use, the clip
 /// planes, and the capture's record of the draw when capture is on.
+#[derive(Clone, Debug)]
 pub struct DrawStream {
     assembler: Assembler,
     window: VertexWindow,
@@ -142,15 +144,6 @@ impl Context {
         if self.render_mode != RenderMode::Render {
             self.send_primitive(&stream.planes, &stream.window, primitive);
         }
-    }
-
-    /// Assembles the primitives of `mode` from processed vertices and sends them on.
-    pub(crate) fn draw_vertices(&mut self, mode: GLenum, vertices: &[ProcessedVertex]) {
-        let mut stream = self.begin_stream(mode);
-        for vertex in vertices {
-            self.stream_vertex(&mut stream, vertex);
-        }
-        self.end_stream(stream);
     }
 
     /// One assembled primitive to clipping, culling and feedback or selection.

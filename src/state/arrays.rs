@@ -79,7 +79,7 @@ impl ArrayKind {
     }
 
     /// Integer colors and normals are normalized (table 2.9); coordinates convert directly.
-    fn normalized(self) -> bool {
+    pub fn normalized(self) -> bool {
         matches!(self, ArrayKind::Normal | ArrayKind::Color)
     }
 }
