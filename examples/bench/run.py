@@ -161,6 +161,8 @@ def main():
     osmesa, fflight = args.bench_dir / "bench_osmesa", args.bench_dir / "bench_fflight"
 
     cpu = cpu_line()
+    with open("/proc/loadavg") as f:  # other work on the machine skews the timings
+        load = f.read().split()[0]
     rows, notes = timed_rows(osmesa, fflight, args.vertices)
     rows += memory_rows(fflight, 10 * args.vertices)
     plotted = plot(osmesa, fflight, args.vertices, args.bench_dir,
@@ -168,7 +170,8 @@ def main():
     rows.insert(0, ["scene", "OSMesa ns/vertex", "fflight ns/vertex",
                     "ratio (OSMesa/fflight)", "target", "result"])
     notes += [f"median of {RUNS} runs after a warm-up; {args.vertices} vertices per scene "
-              f"(mesh: a square grid), memory scenes {10 * args.vertices}",
+              f"(mesh: a square grid), memory scenes {10 * args.vertices}; "
+              f"load average at the start {load}",
               "memory: growth of the peak RSS (VmHWM) over one call, 1 light, after a "
               f"1000-vertex warm-up call; allowance {ALLOWANCE_KIB} KiB beyond 1 MiB per thread"]
     if plotted:

@@ -15,7 +15,7 @@
 use glam::{DMat3, DMat4, DVec3, Mat4, Vec4};
 use multiversion::multiversion;
 
-use super::lanes::{Lanes, LanesF32, Vec3s, clamp01};
+use super::lanes::{LANES, Lanes, LanesF32, Vec3s, clamp01};
 use super::{PreparedFace, PreparedLight, PreparedLighting};
 use crate::pipeline::block::{InputBlock, Lanes4, OutputBlock};
 use crate::pipeline::vertex::DerivedState;
@@ -29,58 +29,82 @@ use crate::state::material::MaterialMask;
 ))]
 pub fn process_blocks(derived: &DerivedState, inputs: &[InputBlock], outputs: &mut [OutputBlock]) {
     let lighting = &derived.lighting;
-    let pairs = inputs.iter().zip(outputs.iter_mut());
+    // Plain loops, no closures: a closure would be compiled apart from this function and
+    // without its target features.
+    macro_rules! run {
+        ($lit:literal, $two_side:literal, $local_viewer:literal) => {
+            for (input, output) in inputs.iter().zip(outputs.iter_mut()) {
+                process::<$lit, $two_side, $local_viewer>(derived, input, output);
+            }
+        };
+    }
     match (lighting.enabled, lighting.two_side, lighting.local_viewer) {
-        (false, _, _) => pairs.for_each(|(i, o)| process::<false, false, false>(derived, i, o)),
-        (true, false, false) => {
-            pairs.for_each(|(i, o)| process::<true, false, false>(derived, i, o))
-        }
-        (true, false, true) => pairs.for_each(|(i, o)| process::<true, false, true>(derived, i, o)),
-        (true, true, false) => pairs.for_each(|(i, o)| process::<true, true, false>(derived, i, o)),
-        (true, true, true) => pairs.for_each(|(i, o)| process::<true, true, true>(derived, i, o)),
+        (false, _, _) => run!(false, false, false),
+        (true, false, false) => run!(true, false, false),
+        (true, false, true) => run!(true, false, true),
+        (true, true, false) => run!(true, true, false),
+        (true, true, true) => run!(true, true, true),
     }
 }
 
 /// `m * v` per lane, in glam's order of operations.
 #[inline(always)]
 fn transform4(m: &DMat4, v: &[Lanes; 4]) -> [Lanes; 4] {
-    let columns = m.to_cols_array_2d();
-    std::array::from_fn(|row| {
-        let c = |k: usize| Lanes::splat(columns[k][row]);
-        c(0) * v[0] + c(1) * v[1] + c(2) * v[2] + c(3) * v[3]
-    })
+    let c = m.to_cols_array_2d();
+    let mut out = [Lanes::ZERO; 4];
+    for (row, o) in out.iter_mut().enumerate() {
+        *o = Lanes::splat(c[0][row]) * v[0]
+            + Lanes::splat(c[1][row]) * v[1]
+            + Lanes::splat(c[2][row]) * v[2]
+            + Lanes::splat(c[3][row]) * v[3];
+    }
+    out
 }
 
 /// `m * v` per lane for the single-precision texture matrix, in glam's order.
 #[inline(always)]
 fn transform4_f32(m: &Mat4, v: &Lanes4) -> Lanes4 {
-    let columns = m.to_cols_array_2d();
-    std::array::from_fn(|row| {
-        std::array::from_fn(|lane| {
-            columns[0][row] * v[0][lane]
-                + columns[1][row] * v[1][lane]
-                + columns[2][row] * v[2][lane]
-                + columns[3][row] * v[3][lane]
-        })
-    })
+    let c = m.to_cols_array_2d();
+    let mut out = [[0.0; LANES]; 4];
+    for (row, o) in out.iter_mut().enumerate() {
+        for lane in 0..LANES {
+            o[lane] = c[0][row] * v[0][lane]
+                + c[1][row] * v[1][lane]
+                + c[2][row] * v[2][lane]
+                + c[3][row] * v[3][lane];
+        }
+    }
+    out
 }
 
 #[inline(always)]
 fn transform3(m: &DMat3, v: Vec3s) -> Vec3s {
     let c = m.to_cols_array_2d();
-    let row = |r: usize| {
-        Lanes::splat(c[0][r]) * v.x + Lanes::splat(c[1][r]) * v.y + Lanes::splat(c[2][r]) * v.z
-    };
+    let mut out = [Lanes::ZERO; 3];
+    for (r, o) in out.iter_mut().enumerate() {
+        *o =
+            Lanes::splat(c[0][r]) * v.x + Lanes::splat(c[1][r]) * v.y + Lanes::splat(c[2][r]) * v.z;
+    }
     Vec3s {
-        x: row(0),
-        y: row(1),
-        z: row(2),
+        x: out[0],
+        y: out[1],
+        z: out[2],
     }
 }
 
 #[inline(always)]
 fn to_f32(v: [Lanes; 4]) -> Lanes4 {
-    v.map(Lanes::to_f32)
+    [v[0].to_f32(), v[1].to_f32(), v[2].to_f32(), v[3].to_f32()]
+}
+
+#[inline(always)]
+fn from_f32(v: &Lanes4) -> [Lanes; 4] {
+    [
+        Lanes::from_f32(&v[0]),
+        Lanes::from_f32(&v[1]),
+        Lanes::from_f32(&v[2]),
+        Lanes::from_f32(&v[3]),
+    ]
 }
 
 /// The per-face sums of light colors weighted by the light-dependent factors.
@@ -93,13 +117,10 @@ struct LightSums {
 /// Adds `weight * color` to `sum` in the lanes where `keep` is positive.
 #[inline(always)]
 fn accumulate(sum: &mut Vec3s, keep: Lanes, weight: Lanes, color: DVec3) {
-    let add =
-        |s: Lanes, c: f64| s + keep.select_gt(Lanes::ZERO, weight * Lanes::splat(c), Lanes::ZERO);
-    *sum = Vec3s {
-        x: add(sum.x, color.x),
-        y: add(sum.y, color.y),
-        z: add(sum.z, color.z),
-    };
+    let zero = Lanes::ZERO;
+    sum.x = sum.x + keep.select_gt(zero, weight * Lanes::splat(color.x), zero);
+    sum.y = sum.y + keep.select_gt(zero, weight * Lanes::splat(color.y), zero);
+    sum.z = sum.z + keep.select_gt(zero, weight * Lanes::splat(color.z), zero);
 }
 
 /// Light `light`'s terms for the block, added to `sums` (§2.14.1). POSITIONAL, SPOT and
@@ -125,23 +146,29 @@ fn add_light<
         let offset = light_position - position;
         let distance = offset.length();
         let to_light = offset.div(distance);
-        let attenuation = ATTENUATION.then(|| {
-            let k = light.attenuation.unwrap_or(DVec3::X);
-            Lanes::ONE
-                / (Lanes::splat(k.x)
-                    + Lanes::splat(k.y) * distance
-                    + Lanes::splat(k.z) * distance * distance)
-        });
+        let k = light.attenuation.unwrap_or(DVec3::X);
+        let attenuation = if ATTENUATION {
+            Some(
+                Lanes::ONE
+                    / (Lanes::splat(k.x)
+                        + Lanes::splat(k.y) * distance
+                        + Lanes::splat(k.z) * distance * distance),
+            )
+        } else {
+            None
+        };
         (to_light, attenuation)
     } else {
         (light_position, None)
     };
-    let spot = SPOT.then(|| {
+    let spot = if SPOT {
         let cos_cutoff = light.spot_cos_cutoff.unwrap_or(-1.0);
         let cos_angle = (-to_light).dot(Vec3s::splat(light.spot_direction));
         let factor = cos_angle.max(Lanes::ZERO).pow(light.spot_exponent);
-        cos_angle.select_ge(Lanes::splat(cos_cutoff), factor, Lanes::ZERO)
-    });
+        Some(cos_angle.select_ge(Lanes::splat(cos_cutoff), factor, Lanes::ZERO))
+    } else {
+        None
+    };
     // The scalar path multiplies by an attenuation of 1 and skips lights whose spot factor is
     // 0: a lane whose spot factor is 0 adds nothing.
     let weight = match (attenuation, spot) {
@@ -150,11 +177,10 @@ fn add_light<
         (None, Some(s)) => s,
         (None, None) => Lanes::ONE,
     };
-    let lit = spot.map_or(Lanes::ONE, |s| {
-        Lanes(std::array::from_fn(
-            |i| if s.0[i] != 0.0 { 1.0 } else { 0.0 },
-        ))
-    });
+    let lit = match spot {
+        Some(s) => s.nonzero(),
+        None => Lanes::ONE,
+    };
     accumulate(&mut sums.ambient, lit, weight, light.ambient);
 
     let half = if POSITIONAL || LOCAL_VIEWER {
@@ -174,9 +200,7 @@ fn add_light<
         };
         let diffuse = n_dot_l.max(Lanes::ZERO);
         let specular = n_dot_h.max(Lanes::ZERO).pow(faces[face].shininess);
-        let keep = Lanes(std::array::from_fn(|i| {
-            if diffuse.0[i] > 0.0 { lit.0[i] } else { 0.0 }
-        }));
+        let keep = diffuse.select_gt(Lanes::ZERO, lit, Lanes::ZERO);
         accumulate(
             &mut sums.diffuse[face],
             keep,
@@ -204,7 +228,8 @@ fn material_property(
     if face.tracked.contains(mask) {
         *color
     } else {
-        value.to_array().map(|v| [v; super::lanes::LANES])
+        let v = value.to_array();
+        [[v[0]; LANES], [v[1]; LANES], [v[2]; LANES], [v[3]; LANES]]
     }
 }
 
@@ -237,11 +262,11 @@ fn face_colors(
 ) -> (Lanes4, Lanes4) {
     let prepared = &lighting.faces[face];
     let material = &prepared.material;
-    let property = |mask, value| material_property(prepared, mask, value, color);
-    let diffuse_rgba = property(MaterialMask::DIFFUSE, material.diffuse);
-    let ambient = rgb(&property(MaterialMask::AMBIENT, material.ambient));
-    let emission = rgb(&property(MaterialMask::EMISSION, material.emission));
-    let specular_color = rgb(&property(MaterialMask::SPECULAR, material.specular));
+    let diffuse_rgba = material_property(prepared, MaterialMask::DIFFUSE, material.diffuse, color);
+    let ambient = material_property(prepared, MaterialMask::AMBIENT, material.ambient, color);
+    let emission = material_property(prepared, MaterialMask::EMISSION, material.emission, color);
+    let specular = material_property(prepared, MaterialMask::SPECULAR, material.specular, color);
+    let (ambient, emission, specular_color) = (rgb(&ambient), rgb(&emission), rgb(&specular));
     let unlit = emission + ambient * (Vec3s::splat(lighting.scene_ambient) + sums.ambient);
     let diffuse = rgb(&diffuse_rgba) * sums.diffuse[face];
     let specular = specular_color * sums.specular[face];
@@ -249,12 +274,12 @@ fn face_colors(
     if lighting.separate_specular {
         (
             clamp_rgba(unlit + diffuse, alpha),
-            clamp_rgba(specular, [0.0; super::lanes::LANES]),
+            clamp_rgba(specular, [0.0; LANES]),
         )
     } else {
         (
             clamp_rgba(unlit + diffuse + specular, alpha),
-            [[0.0; super::lanes::LANES]; 4],
+            [[0.0; LANES]; 4],
         )
     }
 }
@@ -267,7 +292,7 @@ fn process<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
     out: &mut OutputBlock,
 ) {
     let transform = &derived.transform;
-    let object = input.position.map(|c| Lanes::from_f32(&c));
+    let object = from_f32(&input.position);
     let eye = transform4(&transform.modelview, &object);
     out.len = input.len;
     out.eye = to_f32(eye);
@@ -276,8 +301,10 @@ fn process<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
     out.edge_flag = input.edge_flag;
 
     if !LIT {
-        let primary = input.color.map(clamp01);
-        let secondary = input.secondary_color.map(clamp01);
+        let c = &input.color;
+        let s = &input.secondary_color;
+        let primary = [clamp01(c[0]), clamp01(c[1]), clamp01(c[2]), clamp01(c[3])];
+        let secondary = [clamp01(s[0]), clamp01(s[1]), clamp01(s[2]), clamp01(s[3])];
         (out.front_primary, out.front_secondary) = (primary, secondary);
         (out.back_primary, out.back_secondary) = (primary, secondary);
         return;
@@ -347,19 +374,12 @@ fn process<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
 /// A homogeneous eye-space point as a 3D point, lane by lane (`lighting::homogenize`).
 #[inline(always)]
 fn homogenize(eye: [Lanes; 4]) -> Vec3s {
+    // Dividing by 1 changes nothing: only w = 0 must not divide.
     let w = eye[3];
-    let divide = |c: Lanes| {
-        Lanes(std::array::from_fn(|i| {
-            if w.0[i] != 0.0 && w.0[i] != 1.0 {
-                c.0[i] / w.0[i]
-            } else {
-                c.0[i]
-            }
-        }))
-    };
+    let divisor = w.nonzero().select_gt(Lanes::ZERO, w, Lanes::ONE);
     Vec3s {
-        x: divide(eye[0]),
-        y: divide(eye[1]),
-        z: divide(eye[2]),
+        x: eye[0] / divisor,
+        y: eye[1] / divisor,
+        z: eye[2] / divisor,
     }
 }

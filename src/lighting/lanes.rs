@@ -7,6 +7,26 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+/// `Lanes` whose lane `i` is `expr`: a plain loop, no closure, so it compiles inline with the
+/// calling kernel's vector instructions.
+macro_rules! lanewise {
+    ($i:ident => $expr:expr) => {{
+        let mut out = [0.0f64; LANES];
+        for $i in 0..LANES {
+            out[$i] = $expr;
+        }
+        Lanes(out)
+    }};
+}
+
+/// `then` if `condition`, else `otherwise`, by masking bits: compilers keep it a vector
+/// blend where an `if` can become a branch per lane.
+#[inline(always)]
+fn select(condition: bool, then: f64, otherwise: f64) -> f64 {
+    let mask = (condition as u64).wrapping_neg();
+    f64::from_bits((then.to_bits() & mask) | (otherwise.to_bits() & !mask))
+}
+
 /// Vertices per block.
 pub const LANES: usize = 8;
 
@@ -29,58 +49,46 @@ impl Lanes {
 
     #[inline(always)]
     pub fn from_f32(values: &LanesF32) -> Lanes {
-        Lanes(std::array::from_fn(|i| f64::from(values[i])))
+        lanewise!(i => f64::from(values[i]))
     }
 
     #[inline(always)]
     pub fn to_f32(self) -> LanesF32 {
-        std::array::from_fn(|i| self.0[i] as f32)
-    }
-
-    #[inline(always)]
-    fn map(self, f: impl Fn(f64) -> f64) -> Lanes {
-        Lanes(std::array::from_fn(|i| f(self.0[i])))
-    }
-
-    #[inline(always)]
-    fn zip(self, other: Lanes, f: impl Fn(f64, f64) -> f64) -> Lanes {
-        Lanes(std::array::from_fn(|i| f(self.0[i], other.0[i])))
+        let mut out = [0.0; LANES];
+        for (o, v) in out.iter_mut().zip(self.0) {
+            *o = v as f32;
+        }
+        out
     }
 
     #[inline(always)]
     pub fn sqrt(self) -> Lanes {
-        self.map(f64::sqrt)
+        lanewise!(i => self.0[i].sqrt())
     }
 
     /// `self` where it is greater than `floor`, else `floor`: a NaN lane becomes `floor`, as
     /// with `f64::max`.
     #[inline(always)]
     pub fn max(self, floor: Lanes) -> Lanes {
-        self.zip(floor, |a, b| if a > b { a } else { b })
+        lanewise!(i => self.0[i].max(floor.0[i]))
     }
 
     /// `then` in the lanes where `self > bound`, else `otherwise`.
     #[inline(always)]
     pub fn select_gt(self, bound: Lanes, then: Lanes, otherwise: Lanes) -> Lanes {
-        Lanes(std::array::from_fn(|i| {
-            if self.0[i] > bound.0[i] {
-                then.0[i]
-            } else {
-                otherwise.0[i]
-            }
-        }))
+        lanewise!(i => select(self.0[i] > bound.0[i], then.0[i], otherwise.0[i]))
     }
 
     /// `then` in the lanes where `self >= bound`, else `otherwise`.
     #[inline(always)]
     pub fn select_ge(self, bound: Lanes, then: Lanes, otherwise: Lanes) -> Lanes {
-        Lanes(std::array::from_fn(|i| {
-            if self.0[i] >= bound.0[i] {
-                then.0[i]
-            } else {
-                otherwise.0[i]
-            }
-        }))
+        lanewise!(i => select(self.0[i] >= bound.0[i], then.0[i], otherwise.0[i]))
+    }
+
+    /// 1 in the lanes that are not 0, else 0 (a NaN lane is not 0).
+    #[inline(always)]
+    pub fn nonzero(self) -> Lanes {
+        lanewise!(i => select(self.0[i] != 0.0, 1.0, 0.0))
     }
 
     /// `self` to the power `exponent`, one exponent for every lane (a shininess or spot
@@ -89,7 +97,7 @@ impl Lanes {
     #[inline(always)]
     pub fn pow(self, exponent: f64) -> Lanes {
         if exponent.fract() != 0.0 {
-            return self.map(|x| x.powf(exponent));
+            return lanewise!(i => self.0[i].powf(exponent));
         }
         let mut bits = exponent as u32;
         let mut base = self;
@@ -113,7 +121,7 @@ macro_rules! lane_operator {
             type Output = Lanes;
             #[inline(always)]
             fn $method(self, other: Lanes) -> Lanes {
-                self.zip(other, |a, b| a $op b)
+                lanewise!(i => self.0[i] $op other.0[i])
             }
         }
     };
@@ -127,7 +135,7 @@ impl Neg for Lanes {
     type Output = Lanes;
     #[inline(always)]
     fn neg(self) -> Lanes {
-        self.map(|a| -a)
+        lanewise!(i => -self.0[i])
     }
 }
 
@@ -189,23 +197,14 @@ impl Vec3s {
     #[inline(always)]
     pub fn normalize_or_zero(self) -> Vec3s {
         let recip = Lanes::ONE / self.length();
-        let usable = Lanes(std::array::from_fn(|i| {
+        let usable = lanewise!(i => {
             let r = recip.0[i];
-            if r.is_finite() && r > 0.0 { r } else { 0.0 }
-        }));
-        let keep = |c: Lanes| {
-            Lanes(std::array::from_fn(|i| {
-                if usable.0[i] > 0.0 {
-                    c.0[i] * usable.0[i]
-                } else {
-                    0.0
-                }
-            }))
-        };
+            select(r > 0.0 && r < f64::INFINITY, r, 0.0)
+        });
         Vec3s {
-            x: keep(self.x),
-            y: keep(self.y),
-            z: keep(self.z),
+            x: usable.select_gt(Lanes::ZERO, self.x * usable, Lanes::ZERO),
+            y: usable.select_gt(Lanes::ZERO, self.y * usable, Lanes::ZERO),
+            z: usable.select_gt(Lanes::ZERO, self.z * usable, Lanes::ZERO),
         }
     }
 }
@@ -262,13 +261,12 @@ impl Neg for Vec3s {
 /// Clamps each lane to [0, 1], a NaN lane to 0 (`lighting::clamp01`'s rule).
 #[inline(always)]
 pub fn clamp01(c: LanesF32) -> LanesF32 {
-    std::array::from_fn(|i| {
-        if c[i] > 0.0 {
-            if c[i] < 1.0 { c[i] } else { 1.0 }
-        } else {
-            0.0
-        }
-    })
+    let mut out = [0.0; LANES];
+    for (o, v) in out.iter_mut().zip(c) {
+        // max first: a NaN lane becomes 0 (`max` returns the other operand).
+        *o = v.max(0.0).min(1.0);
+    }
+    out
 }
 
 #[cfg(test)]
