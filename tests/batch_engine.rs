@@ -236,3 +236,39 @@ fn non_finite_inputs_give_clamped_colors() {
         }
     }
 }
+
+#[test]
+fn bulk_results_do_not_depend_on_the_thread_count() {
+    let mut rng = Rng(99);
+    let mut ctx = random_state(&mut rng);
+    let count = 3 * fflight::commands::capture::MIN_VERTICES_PER_THREAD + 5;
+    let vertices: Vec<_> = (0..count).map(|_| random_vertex(&mut rng)).collect();
+    let positions: Vec<Vec4> = vertices.iter().map(|v| v.0).collect();
+    let normals: Vec<Vec3> = vertices.iter().map(|v| v.1.normal).collect();
+    let colors: Vec<Vec4> = vertices.iter().map(|v| v.1.color).collect();
+    let mut results = Vec::new();
+    for threads in [1, 2, 3] {
+        fflight::threads::set_threads(threads).unwrap();
+        let mut out = vec![Default::default(); count];
+        ctx.light_vertices(&positions, Some(&normals), Some(&colors), &mut out)
+            .unwrap();
+        results.push(out);
+    }
+    fflight::threads::set_threads(0).unwrap();
+    assert!(results[1] == results[0] && results[2] == results[0]);
+    // And each equals the scalar reference path.
+    let derived = ctx.derived().clone();
+    for (i, (position, attribs)) in vertices.iter().enumerate().step_by(97) {
+        let attribs = CurrentAttribs {
+            secondary_color: Vec4::W,
+            tex_coord: Vec4::W,
+            edge_flag: true,
+            ..*attribs
+        };
+        assert_eq!(
+            results[0][i],
+            derived.process(*position, &attribs),
+            "vertex {i}"
+        );
+    }
+}

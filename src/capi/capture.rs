@@ -8,6 +8,7 @@ use super::with_context;
 use crate::commands::capture::BulkLayout;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
+use crate::pipeline::block::OutputBlock;
 use crate::pipeline::capture::CapturedPrimitive;
 use crate::pipeline::vertex::ProcessedVertex;
 
@@ -241,45 +242,80 @@ pub unsafe extern "C" fn fflLightVertices(
         };
         let normals = unsafe { bytes(normals, len(layout.normals)) };
         let colors = unsafe { bytes(colors, len(layout.colors)) };
-        let outputs = [
-            eye_positions,
-            clip_positions,
-            front_primary,
-            front_secondary,
-            back_primary,
-            back_secondary,
-        ];
-        ctx.light_vertices_with(
+        let outputs = BulkOutputs {
+            pointers: [
+                eye_positions,
+                clip_positions,
+                front_primary,
+                front_secondary,
+                back_primary,
+                back_secondary,
+            ],
+            layouts: layout.outputs,
+        };
+        ctx.light_blocks(
             count,
-            |i| {
-                let normal = normals.map(|n| layout.normals.read(n, i));
-                (
-                    Vec4::from_array(layout.positions.read(positions, i)),
-                    normal.map(|n| Vec3::new(n[0], n[1], n[2])),
-                    colors.map(|c| Vec4::from_array(layout.colors.read(c, i))),
-                )
-            },
-            |i, v| {
-                let values = [
-                    v.eye,
-                    v.clip,
-                    v.colors.front.primary,
-                    v.colors.front.secondary,
-                    v.colors.back.primary,
-                    v.colors.back.secondary,
-                ];
-                for ((&out, out_layout), value) in outputs.iter().zip(&layout.outputs).zip(values) {
-                    if !out.is_null() {
-                        // SAFETY: the caller guarantees `count` elements at the stride, not
-                        // overlapping the inputs; i < count.
-                        unsafe {
-                            out.byte_add(out_layout.offset(i))
-                                .cast::<[GLfloat; 4]>()
-                                .write_unaligned(value.to_array())
-                        };
+            |first, block| {
+                for (lane, i) in (first..first + block.len).enumerate() {
+                    block.set_position(lane, Vec4::from_array(layout.positions.read(positions, i)));
+                    if let Some(n) = normals {
+                        let n = layout.normals.read(n, i);
+                        block.set_normal(lane, Vec3::new(n[0], n[1], n[2]));
+                    }
+                    if let Some(c) = colors {
+                        block.set_color(lane, Vec4::from_array(layout.colors.read(c, i)));
                     }
                 }
             },
+            // SAFETY: the caller guarantees `count` elements at each output's stride, not
+            // overlapping the inputs or each other; each block is emitted once.
+            |first, block| unsafe { outputs.write(first, block) },
         )
     })
+}
+
+/// fflLightVertices' six outputs (NULL: skipped), written from the bulk call's threads.
+struct BulkOutputs {
+    pointers: [*mut GLfloat; 6],
+    layouts: [crate::commands::capture::FloatLayout; 6],
+}
+
+// SAFETY: the threads write disjoint vertices of the application's arrays, which the caller
+// guarantees do not overlap.
+unsafe impl Sync for BulkOutputs {}
+
+impl BulkOutputs {
+    /// Writes the lit vertices of `block`, vertices `first..`.
+    ///
+    /// # Safety
+    /// Each non-NULL output holds vertex `first + block.len - 1` at its stride.
+    unsafe fn write(&self, first: usize, block: &OutputBlock) {
+        let values = [
+            &block.eye,
+            &block.clip,
+            &block.front_primary,
+            &block.front_secondary,
+            &block.back_primary,
+            &block.back_secondary,
+        ];
+        for ((&out, layout), lanes) in self.pointers.iter().zip(&self.layouts).zip(values) {
+            if out.is_null() {
+                continue;
+            }
+            for lane in 0..block.len {
+                let value = [
+                    lanes[0][lane],
+                    lanes[1][lane],
+                    lanes[2][lane],
+                    lanes[3][lane],
+                ];
+                // SAFETY: forwarded from the caller.
+                unsafe {
+                    out.byte_add(layout.offset(first + lane))
+                        .cast::<[GLfloat; 4]>()
+                        .write_unaligned(value)
+                };
+            }
+        }
+    }
 }

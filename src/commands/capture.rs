@@ -7,9 +7,13 @@ use glam::{Vec3, Vec4};
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
+use crate::lighting::batch::process_blocks;
+use crate::lighting::lanes::LANES;
+use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::pipeline::capture::Capture;
 use crate::pipeline::vertex::{CurrentAttribs, ProcessedVertex};
 use crate::state::arrays::read_components;
+use crate::threads::thread_count;
 
 /// The layout of one strided array of floats of a bulk call: element i starts `i * stride`
 /// bytes in and has `size` floats.
@@ -82,12 +86,12 @@ impl Context {
         &self.capture
     }
 
-    /// Lights `count` vertices with the current state through the same per-vertex path as
-    /// glVertex (`DerivedState::process`): `vertex(i)` gives vertex i's object position and
-    /// its normal and color (`None`: the current ones), `lit(i, v)` receives the result. Each
-    /// result equals what glColor, glNormal, glVertex would give the vertex in immediate
-    /// mode; the current attributes are left unchanged, and nothing is drawn or captured.
-    /// GL_INVALID_OPERATION between glBegin and glEnd.
+    /// Lights `count` vertices with the current state through the batch engine, the path
+    /// every draw takes: `vertex(i)` gives vertex i's object position and its normal and color
+    /// (`None`: the current ones), `lit(i, v)` receives the result. Each result equals what
+    /// glColor, glNormal, glVertex would give the vertex in immediate mode; the current
+    /// attributes are left unchanged, and nothing is drawn or captured. GL_INVALID_OPERATION
+    /// between glBegin and glEnd.
     pub fn light_vertices_with(
         &mut self,
         count: usize,
@@ -96,22 +100,81 @@ impl Context {
     ) -> GlResult {
         self.outside_begin_end()?;
         let current = self.current;
-        let derived = self.derived();
-        for i in 0..count {
-            let (position, normal, color) = vertex(i);
-            let attribs = CurrentAttribs {
-                normal: normal.unwrap_or(current.normal),
-                color: color.unwrap_or(current.color),
-                ..current
-            };
-            lit(i, &derived.process(position, &attribs));
+        let derived = self.shared_derived();
+        let mut input = [InputBlock::with_attribs(&current)];
+        let mut output = [OutputBlock::default()];
+        for first in (0..count).step_by(LANES) {
+            input[0].len = 0;
+            for i in first..count.min(first + LANES) {
+                let (position, normal, color) = vertex(i);
+                let attribs = CurrentAttribs {
+                    normal: normal.unwrap_or(current.normal),
+                    color: color.unwrap_or(current.color),
+                    ..current
+                };
+                input[0].push(position, &attribs);
+            }
+            process_blocks(&derived, &input, &mut output);
+            for lane in 0..output[0].len {
+                lit(first + lane, &output[0].vertex(lane));
+            }
         }
+        Ok(())
+    }
+
+    /// Bulk lighting a block at a time, on several threads for large counts
+    /// (`threads::thread_count`): `fill(first, block)` puts vertices `first..first +
+    /// block.len` into the block's lanes (the lanes hold the current attributes, and what
+    /// `fill` puts there stays until it puts something else),
+    /// `emit(first, block)` receives them lit. Blocks are independent, so the results do not
+    /// depend on the thread count; `emit` is called from the threads, each block once.
+    /// GL_INVALID_OPERATION between glBegin and glEnd.
+    pub fn light_blocks(
+        &mut self,
+        count: usize,
+        fill: impl Fn(usize, &mut InputBlock) + Sync,
+        emit: impl Fn(usize, &OutputBlock) + Sync,
+    ) -> GlResult {
+        self.outside_begin_end()?;
+        let derived = self.shared_derived();
+        let template = InputBlock::with_attribs(&self.current);
+        let run = |blocks: std::ops::Range<usize>| {
+            let mut inputs = [template; CHUNK_BLOCKS];
+            let mut outputs = [OutputBlock::default(); CHUNK_BLOCKS];
+            for chunk in blocks.clone().step_by(CHUNK_BLOCKS) {
+                let chunk_len = CHUNK_BLOCKS.min(blocks.end - chunk);
+                for (k, input) in inputs[..chunk_len].iter_mut().enumerate() {
+                    let first = (chunk + k) * LANES;
+                    input.len = LANES.min(count - first);
+                    fill(first, input);
+                }
+                process_blocks(&derived, &inputs[..chunk_len], &mut outputs[..chunk_len]);
+                for (k, output) in outputs[..chunk_len].iter().enumerate() {
+                    emit((chunk + k) * LANES, output);
+                }
+            }
+        };
+        let blocks = count.div_ceil(LANES);
+        let threads = thread_count().min(count / MIN_VERTICES_PER_THREAD).max(1);
+        if threads == 1 {
+            run(0..blocks);
+            return Ok(());
+        }
+        let share = blocks.div_ceil(threads);
+        std::thread::scope(|scope| {
+            let run = &run;
+            for t in 1..threads {
+                let start = (t * share).min(blocks);
+                scope.spawn(move || run(start..((t + 1) * share).min(blocks)));
+            }
+            run(0..share.min(blocks));
+        });
         Ok(())
     }
 
     /// `light_vertices_with` over slices: one result per position in `out`. Normals and
     /// colors, when given, and `out` must have an element per position (else
-    /// GL_INVALID_VALUE).
+    /// GL_INVALID_VALUE). Large counts are split across threads.
     pub fn light_vertices(
         &mut self,
         positions: &[Vec4],
@@ -124,13 +187,38 @@ impl Context {
         if short(normals.map(<[_]>::len)) || short(colors.map(<[_]>::len)) || out.len() < count {
             return Err(GlError::InvalidValue);
         }
-        self.light_vertices_with(
+        let out = OutputSlots(std::sync::Mutex::new(out));
+        self.light_blocks(
             count,
-            |i| (positions[i], normals.map(|n| n[i]), colors.map(|c| c[i])),
-            |i, v| out[i] = *v,
+            |first, block| {
+                for (lane, i) in (first..first + block.len).enumerate() {
+                    block.set_position(lane, positions[i]);
+                    if let Some(normals) = normals {
+                        block.set_normal(lane, normals[i]);
+                    }
+                    if let Some(colors) = colors {
+                        block.set_color(lane, colors[i]);
+                    }
+                }
+            },
+            |first, block| {
+                let mut out = out.0.lock().unwrap_or_else(|e| e.into_inner());
+                for lane in 0..block.len {
+                    out[first + lane] = block.vertex(lane);
+                }
+            },
         )
     }
 }
+
+/// The output slice of `light_vertices`, shared by the threads.
+struct OutputSlots<'a>(std::sync::Mutex<&'a mut [ProcessedVertex]>);
+
+/// Blocks a thread processes at a time: inputs and outputs stay in the first-level cache.
+const CHUNK_BLOCKS: usize = 16;
+
+/// Below this many vertices per thread, a call runs on fewer threads.
+pub const MIN_VERTICES_PER_THREAD: usize = 16 * 1024;
 
 /// fflLightVertices' layout, validated: the vertex count, the input arrays (positions of
 /// `position_size` floats, normals of 3, colors of 4) and the six outputs (4 floats each:

@@ -70,15 +70,27 @@ impl InputBlock {
     /// Appends a vertex at `position` with `attribs`.
     pub fn push(&mut self, position: Vec4, attribs: &CurrentAttribs) {
         let lane = self.len;
-        lanes4_set(&mut self.position, lane, position);
-        for (component, v) in self.normal.iter_mut().zip(attribs.normal.to_array()) {
-            component[lane] = v;
-        }
-        lanes4_set(&mut self.color, lane, attribs.color);
+        self.set_position(lane, position);
+        self.set_normal(lane, attribs.normal);
+        self.set_color(lane, attribs.color);
         lanes4_set(&mut self.secondary_color, lane, attribs.secondary_color);
         lanes4_set(&mut self.tex_coord, lane, attribs.tex_coord);
         self.edge_flag[lane] = attribs.edge_flag;
         self.len += 1;
+    }
+
+    pub fn set_position(&mut self, lane: usize, position: Vec4) {
+        lanes4_set(&mut self.position, lane, position);
+    }
+
+    pub fn set_normal(&mut self, lane: usize, normal: Vec3) {
+        for (component, v) in self.normal.iter_mut().zip(normal.to_array()) {
+            component[lane] = v;
+        }
+    }
+
+    pub fn set_color(&mut self, lane: usize, color: Vec4) {
+        lanes4_set(&mut self.color, lane, color);
     }
 
     /// The position of lane `lane`.
