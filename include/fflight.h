@@ -1620,7 +1620,9 @@ void glViewport(GLint x, GLint y, GLsizei width, GLsizei height);
 void glDepthRange(GLclampd near, GLclampd far);
 
 /*
- `buffer` must have room for `size` floats until glRenderMode ends feedback.
+ `buffer` must have room for `size` floats whenever the context is in feedback mode until
+ glFeedbackBuffer is called again: fed-back values are written straight into it, and
+ glRenderMode only returns their count.
  */
 void glFeedbackBuffer(GLsizei size, GLenum kind, GLfloat *buffer);
 

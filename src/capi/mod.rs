@@ -17,6 +17,8 @@ mod raster;
 mod raster_pos;
 mod select;
 
+pub use feedback::ApplicationFloats;
+
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use crate::context::Context;

@@ -4,7 +4,7 @@
 use crate::context::{Context, RenderMode};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
-use crate::pipeline::feedback::FeedbackLayout;
+use crate::pipeline::feedback::{FeedbackLayout, FeedbackStorage};
 use crate::state::raster::MAX_VIEWPORT_DIMS;
 
 /// What glRenderMode hands the C layer when feedback or selection ends: the values to write
@@ -52,11 +52,18 @@ impl Context {
             return Err(GlError::InvalidValue);
         }
         let layout = FeedbackLayout::of(kind)?;
+        self.feedback.storage = FeedbackStorage::Kept;
         self.feedback.layout = Some(layout);
         self.feedback.capacity = size as usize;
         self.feedback.restart();
         self.feedback_address = address;
         Ok(())
+    }
+
+    /// Where the values of the feedback buffer set last go (the C layer: the application's
+    /// memory).
+    pub fn feedback_storage(&mut self, storage: FeedbackStorage) {
+        self.feedback.storage = storage;
     }
 
     /// glRenderMode: returns the value count of the feedback that ends or the hit count of

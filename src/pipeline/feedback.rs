@@ -43,29 +43,76 @@ pub struct FeedbackVertex {
     pub tex_coord: Vec4,
 }
 
+/// Where fed-back values go: into memory the application gave to glFeedbackBuffer (the C
+/// layer installs it, so a draw of any size needs no copy of its own), or into a vector the
+/// context keeps until glRenderMode hands it over (Rust callers).
+#[derive(Debug, Default)]
+pub enum FeedbackStorage {
+    #[default]
+    Kept,
+    Application(crate::capi::ApplicationFloats),
+}
+
 /// The feedback buffer as the context keeps it: at most `capacity` values, then overflow.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Debug, Default)]
 pub struct FeedbackBuffer {
     pub layout: Option<FeedbackLayout>,
     pub capacity: usize,
+    /// The values of a `Kept` buffer.
     pub values: Vec<f32>,
+    pub storage: FeedbackStorage,
+    /// How many values this feedback pass wrote.
+    pub written: usize,
     pub overflowed: bool,
     /// Set when the line stipple restarts: the next segment is a GL_LINE_RESET_TOKEN.
     pub line_reset_pending: bool,
+}
+
+/// A copy keeps its own values: a clone of a buffer writing into the application's memory
+/// takes what was written so far and goes on in a vector of its own.
+impl Clone for FeedbackBuffer {
+    fn clone(&self) -> FeedbackBuffer {
+        let values = match &self.storage {
+            FeedbackStorage::Kept => self.values.clone(),
+            FeedbackStorage::Application(memory) => memory.as_slice()[..self.written].to_vec(),
+        };
+        FeedbackBuffer {
+            layout: self.layout,
+            capacity: self.capacity,
+            values,
+            storage: FeedbackStorage::Kept,
+            written: self.written,
+            overflowed: self.overflowed,
+            line_reset_pending: self.line_reset_pending,
+        }
+    }
 }
 
 impl FeedbackBuffer {
     /// Starts a new feedback pass: the buffer empties.
     pub fn restart(&mut self) {
         self.values.clear();
+        self.written = 0;
         self.overflowed = false;
         self.line_reset_pending = false;
     }
 
     pub fn value(&mut self, value: f32) {
-        if self.values.len() < self.capacity {
-            self.values.push(value);
-        } else {
+        self.values_of(&[value]);
+    }
+
+    /// Appends `values`, as many as fit; the rest overflow.
+    pub fn values_of(&mut self, values: &[f32]) {
+        let room = self.capacity - self.written;
+        let fitting = &values[..values.len().min(room)];
+        match &mut self.storage {
+            FeedbackStorage::Kept => self.values.extend_from_slice(fitting),
+            FeedbackStorage::Application(memory) => memory.as_mut_slice()
+                [self.written..self.written + fitting.len()]
+                .copy_from_slice(fitting),
+        }
+        self.written += fitting.len();
+        if fitting.len() < values.len() {
             self.overflowed = true;
         }
     }
@@ -98,24 +145,26 @@ impl FeedbackBuffer {
 
     pub fn vertex(&mut self, vertex: &FeedbackVertex) {
         let Some(layout) = self.layout else { return };
-        self.value(vertex.window.x);
-        self.value(vertex.window.y);
+        let mut values = [0.0; 12];
+        let mut n = 0;
+        let mut put = |v: &[f32]| {
+            values[n..n + v.len()].copy_from_slice(v);
+            n += v.len();
+        };
+        put(&[vertex.window.x, vertex.window.y]);
         if layout.z {
-            self.value(vertex.window.z);
+            put(&[vertex.window.z]);
         }
         if layout.w {
-            self.value(vertex.window.w);
+            put(&[vertex.window.w]);
         }
         if layout.color {
-            for c in vertex.color.to_array() {
-                self.value(c);
-            }
+            put(&vertex.color.to_array());
         }
         if layout.texture {
-            for t in vertex.tex_coord.to_array() {
-                self.value(t);
-            }
+            put(&vertex.tex_coord.to_array());
         }
+        self.values_of(&values[..n]);
     }
 
     /// glRenderMode's return value when feedback ends: the value count, or -1 on overflow.
@@ -123,7 +172,7 @@ impl FeedbackBuffer {
         if self.overflowed {
             -1
         } else {
-            self.values.len() as i32
+            self.written as i32
         }
     }
 }
