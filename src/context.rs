@@ -58,6 +58,7 @@ pub struct Context {
     pub(crate) arrays: crate::state::arrays::VertexArrays,
     pub(crate) capture: crate::pipeline::capture::Capture,
     derived: Option<Arc<DerivedState>>,
+    pub(crate) vertex_cache: crate::pipeline::vertex_cache::VertexCache,
 }
 
 impl Default for Context {
@@ -88,6 +89,7 @@ impl Context {
             arrays: Default::default(),
             capture: Default::default(),
             derived: None,
+            vertex_cache: Default::default(),
         }
     }
 

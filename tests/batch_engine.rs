@@ -272,3 +272,54 @@ fn bulk_results_do_not_depend_on_the_thread_count() {
         );
     }
 }
+
+/// glDrawElements through the post-transform cache equals glArrayElement per index, also
+/// when indices collide in the cache (indices 4096 apart) and repeat across windows.
+#[test]
+fn cached_indexed_draws_equal_immediate_mode() {
+    use fflight::commands::arrays::{ArraySources, ElementIndices};
+    use fflight::state::arrays::ArrayKind;
+    let mut rng = Rng(5);
+    let mut ctx = random_state(&mut rng);
+    let count = 3 * 4096 + 17;
+    let floats: Vec<f32> = (0..count * 3).map(|_| rng.uniform(-1.0, 1.0)).collect();
+    let bytes: Vec<u8> = floats.iter().flat_map(|f| f.to_ne_bytes()).collect();
+    ctx.vertex_pointer(3, GL_FLOAT, 0, 4096).unwrap();
+    ctx.normal_pointer(GL_FLOAT, 0, 4096).unwrap();
+    ctx.client_state(GL_VERTEX_ARRAY, true).unwrap();
+    ctx.client_state(GL_NORMAL_ARRAY, true).unwrap();
+    let mut indices: Vec<u32> = Vec::new();
+    for k in 0..3000u32 {
+        let base = (rng.next() % 4096) as u32;
+        indices.push(base + 4096 * (k % 3));
+        indices.push((base + 1) % 4096 + 4096 * ((k + 1) % 3));
+        indices.push(if k % 7 == 0 {
+            base
+        } else {
+            (rng.next() % count as u64) as u32
+        });
+    }
+    let index_bytes: Vec<u8> = indices.iter().flat_map(|i| i.to_ne_bytes()).collect();
+    let sources = ArraySources::new(0)
+        .with(ArrayKind::Vertex, &bytes)
+        .with(ArrayKind::Normal, &bytes);
+    ctx.capture_begin().unwrap();
+    let listed = ElementIndices::Listed {
+        index_type: GL_UNSIGNED_INT,
+        bytes: &index_bytes,
+    };
+    ctx.draw_arrays_from(GL_TRIANGLES, &sources, &listed)
+        .unwrap();
+    ctx.begin(GL_TRIANGLES).unwrap();
+    for &i in &indices {
+        ctx.array_element_from(i as usize, &sources).unwrap();
+    }
+    ctx.end().unwrap();
+    ctx.capture_end().unwrap();
+    let vertices = ctx.captured().vertices();
+    let (drawn, immediate) = vertices.split_at(indices.len());
+    assert_eq!(drawn.len(), immediate.len());
+    for (k, (a, b)) in drawn.iter().zip(immediate).enumerate() {
+        assert_eq!(a, b, "index {k} ({})", indices[k]);
+    }
+}

@@ -423,6 +423,9 @@ impl Context {
     /// The vertices of `indices`, a block at a time: fetched, processed by the batch engine
     /// and streamed into primitive assembly.
     fn draw_arrays_with(&mut self, mode: GLenum, fetch: &ArrayFetch, indices: &ElementIndices) {
+        if matches!(indices, ElementIndices::Listed { .. }) {
+            return self.draw_elements_with(mode, fetch, indices);
+        }
         let derived = self.shared_derived();
         let mut input = InputBlock::with_attribs(&self.current);
         let mut output = [OutputBlock::default()];
@@ -445,6 +448,26 @@ impl Context {
             }
         });
         run_block(self, &block[..len]);
+        self.end_stream(stream);
+    }
+
+    /// Indexed draws: through the post-transform cache, so each vertex the primitives share
+    /// is lit once while it stays cached.
+    fn draw_elements_with(&mut self, mode: GLenum, fetch: &ArrayFetch, indices: &ElementIndices) {
+        let derived = self.shared_derived();
+        let mut input = InputBlock::with_attribs(&self.current);
+        let mut stream = self.begin_stream(mode);
+        let mut cache = std::mem::take(&mut self.vertex_cache);
+        cache.start_draw();
+        indices.for_each(|index| {
+            cache.push(index, (&derived, fetch, &mut input), |v| {
+                self.stream_vertex(&mut stream, v)
+            });
+        });
+        cache.flush(&derived, fetch, &mut input, |v| {
+            self.stream_vertex(&mut stream, v)
+        });
+        self.vertex_cache = cache;
         self.end_stream(stream);
     }
 }

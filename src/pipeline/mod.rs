@@ -12,6 +12,7 @@ pub mod feedback;
 pub mod fetch;
 pub mod select;
 pub mod vertex;
+pub mod vertex_cache;
 
 use glam::Vec4;
 

@@ -1,0 +1,116 @@
+//! The post-transform vertex cache of indexed draws, as hardware and Mesa keep one: a vertex
+//! that several primitives share is fetched, transformed and lit once per draw while it stays
+//! in the cache, not once per reference. Direct-mapped by index, of a fixed size, so a draw
+//! of any size uses the same memory.
+
+use super::block::{InputBlock, OutputBlock};
+use super::fetch::ArrayFetch;
+use super::vertex::{DerivedState, ProcessedVertex};
+use crate::lighting::batch::process_blocks;
+use crate::lighting::lanes::LANES;
+
+/// Slots in the cache: a mesh whose rows are shorter than half of this reuses every vertex.
+const SLOTS: usize = 4096;
+
+/// Indices taken at a time: their misses are lit together, then they are sent on in order.
+const WINDOW: usize = 256;
+
+#[derive(Clone, Copy, Debug, Default)]
+struct Slot {
+    /// The array index whose vertex the slot holds; `usize::MAX` for none.
+    index: usize,
+    /// The window that last used the slot: its vertex must stay until that window is sent.
+    window: u64,
+    vertex: ProcessedVertex,
+}
+
+/// The cache, kept by the context between draws (emptied at each draw: the state or the
+/// arrays may have changed).
+#[derive(Debug, Default)]
+pub struct VertexCache {
+    slots: Vec<Slot>,
+    window: u64,
+    /// The current window's indices, and those of them that missed.
+    pending: Vec<usize>,
+    misses: Vec<usize>,
+}
+
+/// Scratch space: a copy of a context starts with an empty cache.
+impl Clone for VertexCache {
+    fn clone(&self) -> VertexCache {
+        VertexCache::default()
+    }
+}
+
+impl VertexCache {
+    /// Empties the cache for a new draw.
+    pub fn start_draw(&mut self) {
+        if self.slots.is_empty() {
+            self.slots = vec![
+                Slot {
+                    index: usize::MAX,
+                    ..Slot::default()
+                };
+                SLOTS
+            ];
+            self.pending.reserve(WINDOW);
+            self.misses.reserve(WINDOW);
+        }
+        self.slots
+            .iter_mut()
+            .for_each(|slot| slot.index = usize::MAX);
+        self.pending.clear();
+        self.misses.clear();
+        self.window += 1;
+    }
+
+    /// Takes the next index of the draw; sends the pending ones on, lit, through `send` when
+    /// the window is full or the index's slot is still needed by it.
+    pub fn push(
+        &mut self,
+        index: usize,
+        lighting: (&DerivedState, &ArrayFetch, &mut InputBlock),
+        send: impl FnMut(&ProcessedVertex),
+    ) {
+        let slot = index % SLOTS;
+        let mut send = send;
+        if self.slots[slot].index != index && self.slots[slot].window == self.window {
+            self.flush(lighting.0, lighting.1, lighting.2, &mut send);
+        }
+        let entry = &mut self.slots[slot];
+        if entry.index != index {
+            entry.index = index;
+            self.misses.push(index);
+        }
+        entry.window = self.window;
+        self.pending.push(index);
+        if self.pending.len() == WINDOW {
+            self.flush(lighting.0, lighting.1, lighting.2, &mut send);
+        }
+    }
+
+    /// Lights the misses of the window, a block at a time, and sends its indices' vertices
+    /// on in order.
+    pub fn flush(
+        &mut self,
+        derived: &DerivedState,
+        fetch: &ArrayFetch,
+        input: &mut InputBlock,
+        mut send: impl FnMut(&ProcessedVertex),
+    ) {
+        let mut output = [OutputBlock::default()];
+        for block in self.misses.chunks(LANES) {
+            fetch.fill(input, block);
+            process_blocks(derived, std::slice::from_ref(input), &mut output);
+            for (lane, &index) in block.iter().enumerate() {
+                self.slots[index % SLOTS].vertex = output[0].vertex(lane);
+            }
+        }
+        for &index in &self.pending {
+            send(&self.slots[index % SLOTS].vertex);
+        }
+        self.pending.clear();
+        self.misses.clear();
+        self.window += 1;
+    }
+}
