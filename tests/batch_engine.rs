@@ -49,7 +49,7 @@ impl Rng {
 fn random_state(rng: &mut Rng) -> Context {
     let mut ctx = Context::new();
     let on = |ctx: &mut Context, cap, enabled| ctx.set_capability(cap, enabled).unwrap();
-    on(&mut ctx, GL_LIGHTING, rng.next() % 8 != 0);
+    on(&mut ctx, GL_LIGHTING, !rng.next().is_multiple_of(8));
     ctx.matrix_mode(GL_MODELVIEW).unwrap();
     ctx.rotate(
         f64::from(rng.uniform(0.0, 360.0)),
@@ -151,7 +151,7 @@ fn random_state(rng: &mut Rng) -> Context {
 
 fn random_vertex(rng: &mut Rng) -> (Vec4, CurrentAttribs) {
     let mut position = rng.vec4(-2.0, 2.0);
-    position.w = if rng.next() % 4 == 0 {
+    position.w = if rng.next().is_multiple_of(4) {
         rng.uniform(0.5, 2.0)
     } else {
         1.0

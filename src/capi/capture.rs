@@ -303,12 +303,7 @@ impl BulkOutputs {
                 continue;
             }
             for lane in 0..block.len {
-                let value = [
-                    lanes[0][lane],
-                    lanes[1][lane],
-                    lanes[2][lane],
-                    lanes[3][lane],
-                ];
+                let value = lanes.map(|component| component[lane]);
                 // SAFETY: forwarded from the caller.
                 unsafe {
                     out.byte_add(layout.offset(first + lane))

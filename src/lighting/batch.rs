@@ -145,7 +145,7 @@ fn add_light<
     let (to_light, attenuation) = if POSITIONAL {
         let offset = light_position - position;
         let distance = offset.length();
-        let to_light = offset.div(distance);
+        let to_light = offset.divided_by(distance);
         let k = light.attenuation.unwrap_or(DVec3::X);
         let attenuation = if ATTENUATION {
             Some(
@@ -191,7 +191,7 @@ fn add_light<
     let n_dot_l = normal.dot(to_light);
     let n_dot_h = normal.dot(half);
     let face_count = if TWO_SIDE { 2 } else { 1 };
-    for face in 0..face_count {
+    for (face, prepared) in faces.iter().enumerate().take(face_count) {
         // The back face sees the negated normal.
         let (n_dot_l, n_dot_h) = if face == 0 {
             (n_dot_l, n_dot_h)
@@ -199,7 +199,7 @@ fn add_light<
             (-n_dot_l, -n_dot_h)
         };
         let diffuse = n_dot_l.max(Lanes::ZERO);
-        let specular = n_dot_h.max(Lanes::ZERO).pow(faces[face].shininess);
+        let specular = n_dot_h.max(Lanes::ZERO).pow(prepared.shininess);
         let keep = diffuse.select_gt(Lanes::ZERO, lit, Lanes::ZERO);
         accumulate(
             &mut sums.diffuse[face],

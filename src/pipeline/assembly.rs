@@ -92,7 +92,7 @@ impl Assembler {
             GL_TRIANGLE_STRIP if i >= 2 => {
                 // Odd triangles swap their first two vertices to keep the strip's orientation.
                 let j = i - 2;
-                let vertices = if j % 2 == 0 {
+                let vertices = if j.is_multiple_of(2) {
                     [j, j + 1, j + 2]
                 } else {
                     [j + 1, j, j + 2]
