@@ -1627,9 +1627,8 @@ void glDepthRange(GLclampd near, GLclampd far);
 void glFeedbackBuffer(GLsizei size, GLenum kind, GLfloat *buffer);
 
 /*
- Ending feedback writes the collected values (never more than the buffer's size) to the
- buffer glFeedbackBuffer gave; ending selection writes the hit records (never more than the
- buffer's size) to the buffer glSelectBuffer gave.
+ Fed-back values are already in the buffer glFeedbackBuffer gave; ending selection writes
+ the hit records (never more than the buffer's size) to the buffer glSelectBuffer gave.
  */
 GLint glRenderMode(GLenum mode);
 

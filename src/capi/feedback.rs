@@ -75,9 +75,8 @@ impl ApplicationFloats {
     }
 }
 
-/// Ending feedback writes the collected values (never more than the buffer's size) to the
-/// buffer glFeedbackBuffer gave; ending selection writes the hit records (never more than the
-/// buffer's size) to the buffer glSelectBuffer gave.
+/// Fed-back values are already in the buffer glFeedbackBuffer gave; ending selection writes
+/// the hit records (never more than the buffer's size) to the buffer glSelectBuffer gave.
 #[unsafe(no_mangle)]
 pub extern "C" fn glRenderMode(mode: GLenum) -> GLint {
     with_context(|ctx| {
@@ -85,18 +84,6 @@ pub extern "C" fn glRenderMode(mode: GLenum) -> GLint {
         if let Some(finished) = &finished {
             // SAFETY: glSelectBuffer's contract (the records are empty after feedback).
             unsafe { super::select::write_hit_records(finished) };
-        }
-        if let Some(finished) = finished.filter(|f| f.address != 0 && !f.values.is_empty()) {
-            let buffer = finished.address as *mut GLfloat;
-            // SAFETY: glFeedbackBuffer's contract: room for `size` floats, and the context
-            // never keeps more than `size` values.
-            unsafe {
-                std::ptr::copy_nonoverlapping(
-                    finished.values.as_ptr(),
-                    buffer,
-                    finished.values.len(),
-                )
-            };
         }
         Ok(count)
     })

@@ -19,9 +19,8 @@ use glam::{Vec3, Vec4};
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
-use crate::lighting::batch::process_blocks;
 use crate::lighting::lanes::LANES;
-use crate::pipeline::block::{InputBlock, OutputBlock};
+use crate::pipeline::block::InputBlock;
 use crate::pipeline::fetch::ArrayFetch;
 use crate::state::arrays::{ArrayKind, ByteSpan, ClientArray, VertexArrays};
 
@@ -428,16 +427,12 @@ impl Context {
         }
         let derived = self.shared_derived();
         let mut input = InputBlock::with_attribs(&self.current);
-        let mut output = [OutputBlock::default()];
         let mut stream = self.begin_stream(mode);
         let mut block = [0; LANES];
         let mut len = 0;
         let mut run_block = |ctx: &mut Context, block: &[usize]| {
             fetch.fill(&mut input, block);
-            process_blocks(&derived, std::slice::from_ref(&input), &mut output);
-            for lane in 0..block.len() {
-                ctx.stream_vertex(&mut stream, &output[0].vertex(lane));
-            }
+            ctx.stream_block(&mut stream, &derived, &input);
         };
         indices.for_each(|index| {
             block[len] = index;

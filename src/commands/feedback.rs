@@ -52,7 +52,7 @@ impl Context {
             return Err(GlError::InvalidValue);
         }
         let layout = FeedbackLayout::of(kind)?;
-        self.feedback.storage = FeedbackStorage::Kept;
+        self.feedback.storage = FeedbackStorage::default();
         self.feedback.layout = Some(layout);
         self.feedback.capacity = size as usize;
         self.feedback.restart();
@@ -88,7 +88,7 @@ impl Context {
             RenderMode::Render => (0, None),
             RenderMode::Feedback => {
                 let count = self.feedback.result();
-                let values = std::mem::take(&mut self.feedback.values);
+                let values = self.feedback.take_kept();
                 self.feedback.restart();
                 let address = self.feedback_address;
                 (

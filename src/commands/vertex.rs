@@ -5,8 +5,7 @@ use glam::{Vec3, Vec4};
 use crate::context::{Context, PrimitiveInProgress};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
-use crate::lighting::batch::process_blocks;
-use crate::pipeline::block::{InputBlock, OutputBlock};
+use crate::pipeline::block::InputBlock;
 
 impl Context {
     /// glColor: also sets the material properties that an enabled color material tracks.
@@ -79,15 +78,7 @@ impl Context {
         };
         if primitive.pending.len > 0 {
             let derived = self.shared_derived();
-            let mut output = [OutputBlock::default()];
-            process_blocks(
-                &derived,
-                std::slice::from_ref(&primitive.pending),
-                &mut output,
-            );
-            for lane in 0..output[0].len {
-                self.stream_vertex(&mut primitive.stream, &output[0].vertex(lane));
-            }
+            self.stream_block(&mut primitive.stream, &derived, &primitive.pending);
             primitive.pending.len = 0;
         }
         self.primitive = Some(primitive);

@@ -92,20 +92,6 @@ impl InputBlock {
     pub fn set_color(&mut self, lane: usize, color: Vec4) {
         lanes4_set(&mut self.color, lane, color);
     }
-
-    /// The position of lane `lane`.
-    pub fn position(&self, lane: usize) -> Vec4 {
-        lanes4_get(&self.position, lane)
-    }
-
-    /// The normal of lane `lane`.
-    pub fn normal(&self, lane: usize) -> Vec3 {
-        Vec3::new(
-            self.normal[0][lane],
-            self.normal[1][lane],
-            self.normal[2][lane],
-        )
-    }
 }
 
 /// The processed vertices of an `InputBlock`.
@@ -156,15 +142,5 @@ impl OutputBlock {
             tex_coord: lanes4_get(&self.tex_coord, lane),
             edge_flag: self.edge_flag[lane],
         }
-    }
-
-    /// The clip position of lane `lane`.
-    pub fn clip(&self, lane: usize) -> Vec4 {
-        lanes4_get(&self.clip, lane)
-    }
-
-    /// The front primary color of lane `lane`.
-    pub fn front_primary(&self, lane: usize) -> Vec4 {
-        lanes4_get(&self.front_primary, lane)
     }
 }

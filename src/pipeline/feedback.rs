@@ -46,11 +46,16 @@ pub struct FeedbackVertex {
 /// Where fed-back values go: into memory the application gave to glFeedbackBuffer (the C
 /// layer installs it, so a draw of any size needs no copy of its own), or into a vector the
 /// context keeps until glRenderMode hands it over (Rust callers).
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub enum FeedbackStorage {
-    #[default]
-    Kept,
+    Kept(Vec<f32>),
     Application(crate::capi::ApplicationFloats),
+}
+
+impl Default for FeedbackStorage {
+    fn default() -> FeedbackStorage {
+        FeedbackStorage::Kept(Vec::new())
+    }
 }
 
 /// The feedback buffer as the context keeps it: at most `capacity` values, then overflow.
@@ -58,8 +63,6 @@ pub enum FeedbackStorage {
 pub struct FeedbackBuffer {
     pub layout: Option<FeedbackLayout>,
     pub capacity: usize,
-    /// The values of a `Kept` buffer.
-    pub values: Vec<f32>,
     pub storage: FeedbackStorage,
     /// How many values this feedback pass wrote.
     pub written: usize,
@@ -73,14 +76,13 @@ pub struct FeedbackBuffer {
 impl Clone for FeedbackBuffer {
     fn clone(&self) -> FeedbackBuffer {
         let values = match &self.storage {
-            FeedbackStorage::Kept => self.values.clone(),
+            FeedbackStorage::Kept(values) => values.clone(),
             FeedbackStorage::Application(memory) => memory.as_slice()[..self.written].to_vec(),
         };
         FeedbackBuffer {
             layout: self.layout,
             capacity: self.capacity,
-            values,
-            storage: FeedbackStorage::Kept,
+            storage: FeedbackStorage::Kept(values),
             written: self.written,
             overflowed: self.overflowed,
             line_reset_pending: self.line_reset_pending,
@@ -91,7 +93,9 @@ impl Clone for FeedbackBuffer {
 impl FeedbackBuffer {
     /// Starts a new feedback pass: the buffer empties.
     pub fn restart(&mut self) {
-        self.values.clear();
+        if let FeedbackStorage::Kept(values) = &mut self.storage {
+            values.clear();
+        }
         self.written = 0;
         self.overflowed = false;
         self.line_reset_pending = false;
@@ -106,7 +110,7 @@ impl FeedbackBuffer {
         let room = self.capacity - self.written;
         let fitting = &values[..values.len().min(room)];
         match &mut self.storage {
-            FeedbackStorage::Kept => self.values.extend_from_slice(fitting),
+            FeedbackStorage::Kept(kept) => kept.extend_from_slice(fitting),
             FeedbackStorage::Application(memory) => memory.as_mut_slice()
                 [self.written..self.written + fitting.len()]
                 .copy_from_slice(fitting),
@@ -165,6 +169,15 @@ impl FeedbackBuffer {
             put(&vertex.tex_coord.to_array());
         }
         self.values_of(&values[..n]);
+    }
+
+    /// The values of a pass kept by the context (none for the application's memory, which
+    /// holds them already).
+    pub fn take_kept(&mut self) -> Vec<f32> {
+        match &mut self.storage {
+            FeedbackStorage::Kept(values) => std::mem::take(values),
+            FeedbackStorage::Application(_) => Vec::new(),
+        }
     }
 
     /// glRenderMode's return value when feedback ends: the value count, or -1 on overflow.

@@ -5,7 +5,7 @@
 use crate::gl::*;
 use crate::lighting::lanes::LanesF32;
 use crate::pipeline::block::InputBlock;
-use crate::state::arrays::{ArrayKind, ClientArray};
+use crate::state::arrays::{ALL_KINDS, ArrayKind, ClientArray};
 use crate::state::convert::Component;
 
 /// A component type as it sits in an array's bytes (native byte order, any alignment).
@@ -104,18 +104,11 @@ impl<'a> ArrayFetch<'a> {
     /// `arrays[kind]`: the enabled arrays' state and bytes, which start with element `base`
     /// and hold every element the draw reads (checked by the caller).
     pub fn new(base: usize, arrays: [Option<(&ClientArray, &'a [u8])>; 5]) -> ArrayFetch<'a> {
-        let kinds = [
-            ArrayKind::Vertex,
-            ArrayKind::Normal,
-            ArrayKind::Color,
-            ArrayKind::TexCoord,
-            ArrayKind::EdgeFlag,
-        ];
         let arrays = std::array::from_fn(|k| {
             arrays[k].map(|(array, bytes)| ArraySource {
                 bytes,
                 stride: array.effective_stride(),
-                convert: converter(array, kinds[k].normalized()),
+                convert: converter(array, ALL_KINDS[k].normalized()),
             })
         });
         ArrayFetch { base, arrays }

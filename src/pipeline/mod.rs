@@ -19,10 +19,12 @@ use glam::Vec4;
 use crate::context::{Context, RenderMode};
 use crate::gl::*;
 use crate::lighting::FaceColors;
+use crate::lighting::batch::process_blocks;
 use assembly::{Assembler, Primitive};
+use block::{InputBlock, OutputBlock};
 use clip::{ClipPlanes, PolygonVertex, clip_line, clip_triangle, point_visible};
 use feedback::FeedbackVertex;
-use vertex::ProcessedVertex;
+use vertex::{DerivedState, ProcessedVertex};
 
 /// The vertices of a draw that its next primitives may still refer to: vertex 0 and the last
 /// four (`Assembler`'s promise), so a draw of any size is held in a fixed space.
@@ -75,6 +77,8 @@ pub struct DrawStream {
     window: VertexWindow,
     planes: ClipPlanes,
     capture: Option<capture::CapturedDraw>,
+    /// Scratch for clipped polygons, kept across the draw's triangles.
+    polygon: Vec<PolygonVertex>,
 }
 
 /// What feedback needs of a vertex after its colors were chosen.
@@ -115,6 +119,21 @@ impl Context {
             window: VertexWindow::default(),
             planes: self.clip_planes(),
             capture: self.capture.begin_draw(mode),
+            polygon: Vec::new(),
+        }
+    }
+
+    /// Processes `input` with `derived` and streams its vertices into the draw, in order.
+    pub(crate) fn stream_block(
+        &mut self,
+        stream: &mut DrawStream,
+        derived: &DerivedState,
+        input: &InputBlock,
+    ) {
+        let mut output = [OutputBlock::default()];
+        process_blocks(derived, std::slice::from_ref(input), &mut output);
+        for lane in 0..output[0].len {
+            self.stream_vertex(stream, &output[0].vertex(lane));
         }
     }
 
@@ -134,22 +153,27 @@ impl Context {
     pub(crate) fn end_stream(&mut self, mut stream: DrawStream) {
         let mut completed = Completed::default();
         stream.assembler.finish(|p| completed.add(p));
-        completed.for_each(|p| self.route(&stream, p));
+        completed.for_each(|p| self.route(&mut stream, p));
     }
 
     /// A completed primitive to capture, and to clipping and feedback or selection.
-    fn route(&mut self, stream: &DrawStream, primitive: Primitive) {
+    fn route(&mut self, stream: &mut DrawStream, primitive: Primitive) {
         if let Some(draw) = &stream.capture {
             self.capture.push_primitive(primitive, draw, &stream.window);
         }
         if self.render_mode != RenderMode::Render {
-            self.send_primitive(&stream.planes, &stream.window, primitive);
+            self.send_primitive(stream, primitive);
         }
     }
 
     /// One assembled primitive to clipping, culling and feedback or selection.
-    fn send_primitive(&mut self, planes: &ClipPlanes, window: &VertexWindow, primitive: Primitive) {
-        let mut polygon = Vec::new();
+    fn send_primitive(&mut self, stream: &mut DrawStream, primitive: Primitive) {
+        let DrawStream {
+            window,
+            planes,
+            polygon,
+            ..
+        } = stream;
         match primitive {
             Primitive::Point(i) => self.feedback_point(planes, window.get(i)),
             Primitive::Line {
@@ -168,8 +192,8 @@ impl Context {
                     corners.iter_mut().for_each(|v| v.edge_flag = true);
                 }
                 let [a, b, c] = &corners;
-                if clip_triangle(planes, [a, b, c], boundary, &mut polygon) {
-                    self.feedback_polygon(&polygon, c);
+                if clip_triangle(planes, [a, b, c], boundary, polygon) {
+                    self.feedback_polygon(polygon, c);
                 } else {
                     self.feedback_triangle([a, b, c], boundary, c, reset);
                 }

@@ -17,7 +17,7 @@ pub enum ArrayKind {
 }
 
 /// Every array, in storage order.
-const ALL_KINDS: [ArrayKind; 5] = [
+pub const ALL_KINDS: [ArrayKind; 5] = [
     ArrayKind::Vertex,
     ArrayKind::Normal,
     ArrayKind::Color,
