@@ -323,3 +323,66 @@ fn cached_indexed_draws_equal_immediate_mode() {
         assert_eq!(a, b, "index {k} ({})", indices[k]);
     }
 }
+
+/// Points are fed back and selected a block at a time unless capture is on, which sends them
+/// down the per-vertex path of every other primitive: both must give the same values, with
+/// points inside, outside and on the edge of the view volume and of user clip planes.
+#[test]
+fn point_blocks_equal_the_per_vertex_path() {
+    let mut rng = Rng(77);
+    let mut drawn = 0;
+    for state in 0..40 {
+        let mut base = random_state(&mut rng);
+        for plane in 0..(state % 3) {
+            let equation = rng.vec4(-1.0, 1.0).as_dvec4().to_array();
+            base.clip_plane(GL_CLIP_PLANE0 + plane, equation).unwrap();
+            base.set_capability(GL_CLIP_PLANE0 + plane, true).unwrap();
+        }
+        let mut points: Vec<Vec4> = (0..37).map(|_| rng.vec4(-3.0, 3.0)).collect();
+        points.extend([
+            Vec4::new(1.0, 0.0, 0.0, 1.0),
+            Vec4::new(f32::NAN, 0.0, 0.0, 1.0),
+            Vec4::new(f32::INFINITY, 0.0, 0.0, 1.0),
+            Vec4::new(0.0, 0.0, 0.0, f32::INFINITY),
+        ]);
+        let (kind, mode) = if state % 2 == 0 {
+            (GL_4D_COLOR_TEXTURE, GL_FEEDBACK)
+        } else {
+            (GL_3D, GL_SELECT)
+        };
+        let run = |capture: bool| {
+            let mut ctx = base.clone();
+            if mode == GL_FEEDBACK {
+                ctx.feedback_buffer(100_000, kind, 1).unwrap();
+            } else {
+                ctx.select_buffer(1000, 1).unwrap();
+            }
+            ctx.render_mode(mode).unwrap();
+            ctx.init_names().unwrap();
+            ctx.push_name(7).unwrap();
+            if capture {
+                ctx.capture_begin().unwrap();
+            }
+            ctx.begin(GL_POINTS).unwrap();
+            for p in &points {
+                ctx.vertex(*p);
+            }
+            ctx.end().unwrap();
+            let (count, finished) = ctx.render_mode(GL_RENDER).unwrap();
+            let finished = finished.expect("feedback or selection ended");
+            (count, finished.values, finished.hit_records)
+        };
+        let (blocks, per_vertex) = (run(false), run(true));
+        drawn += blocks.0;
+        let same = |a: &[f32], b: &[f32]| {
+            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
+        };
+        assert!(same(&blocks.1, &per_vertex.1), "state {state}");
+        assert_eq!(blocks.0, per_vertex.0, "state {state}");
+        assert_eq!(blocks.2, per_vertex.2, "state {state}");
+    }
+    assert!(
+        drawn > 400,
+        "only {drawn} values and hits: the test draws too little"
+    );
+}

@@ -65,6 +65,10 @@ impl Assembler {
         Assembler { mode, count: 0 }
     }
 
+    pub fn mode(&self) -> GLenum {
+        self.mode
+    }
+
     /// Vertices pushed so far.
     pub fn count(&self) -> usize {
         self.count

@@ -17,7 +17,7 @@ fn lanes4_set(lanes: &mut Lanes4, lane: usize, value: Vec4) {
     }
 }
 
-fn lanes4_get(lanes: &Lanes4, lane: usize) -> Vec4 {
+pub fn lanes4_get(lanes: &Lanes4, lane: usize) -> Vec4 {
     Vec4::new(
         lanes[0][lane],
         lanes[1][lane],

@@ -43,6 +43,21 @@ impl ClipPlanes {
         }
     }
 
+    /// Whether a point at `clip` (in eye coordinates `eye()`, asked only when user planes are
+    /// enabled) is inside every plane: `outside_mask` is 0.
+    pub fn contain(&self, clip: Vec4, eye: impl FnOnce() -> Vec4) -> bool {
+        // The view volume's distances, with `outside_mask`'s NaN rule: x * 0 in a plane's dot
+        // product is NaN only when x is infinite, and then another plane is negative or NaN.
+        let [x, y, z, w] = clip.to_array();
+        let inside = [w - x, w + x, w - y, w + y, w + z, w - z]
+            .into_iter()
+            .all(|distance| distance >= 0.0);
+        inside && {
+            let eye = eye().as_dvec4();
+            self.user.iter().all(|plane| plane.dot(eye) as f32 >= 0.0)
+        }
+    }
+
     /// One bit per plane that `v` is outside of.
     pub fn outside_mask(&self, v: &ProcessedVertex) -> u32 {
         (0..self.count())

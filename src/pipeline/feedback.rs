@@ -5,6 +5,20 @@ use glam::Vec4;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
 
+/// Copies `values` to the start of `to`: a vertex (at most 13 values, token included) with a
+/// copy of fixed length, which compiles to a few moves where a copy of any length calls memcpy.
+fn copy_short(to: &mut [f32], values: &[f32]) {
+    macro_rules! fixed {
+        ($($n:literal),*) => {
+            match values.len() {
+                $($n => to[..$n].copy_from_slice(&values[..$n]),)*
+                n => to[..n].copy_from_slice(values),
+            }
+        };
+    }
+    fixed!(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13)
+}
+
 /// Which values a fed-back vertex carries (glFeedbackBuffer's `type`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FeedbackLayout {
@@ -111,9 +125,9 @@ impl FeedbackBuffer {
         let fitting = &values[..values.len().min(room)];
         match &mut self.storage {
             FeedbackStorage::Kept(kept) => kept.extend_from_slice(fitting),
-            FeedbackStorage::Application(memory) => memory.as_mut_slice()
-                [self.written..self.written + fitting.len()]
-                .copy_from_slice(fitting),
+            FeedbackStorage::Application(memory) => {
+                copy_short(&mut memory.as_mut_slice()[self.written..], fitting)
+            }
         }
         self.written += fitting.len();
         if fitting.len() < values.len() {
@@ -147,14 +161,31 @@ impl FeedbackBuffer {
         self.vertex(&ends[1]);
     }
 
+    /// A point: GL_POINT_TOKEN and its vertex.
+    pub fn point(&mut self, vertex: &FeedbackVertex) {
+        self.token_and_vertex(Some(GL_POINT_TOKEN), vertex);
+    }
+
     pub fn vertex(&mut self, vertex: &FeedbackVertex) {
-        let Some(layout) = self.layout else { return };
-        let mut values = [0.0; 12];
+        self.token_and_vertex(None, vertex);
+    }
+
+    /// `vertex`'s values as the layout has them, after `token` if one is given: written at
+    /// once, so a point is a single copy into the buffer.
+    fn token_and_vertex(&mut self, token: Option<GLenum>, vertex: &FeedbackVertex) {
+        let Some(layout) = self.layout else {
+            token.into_iter().for_each(|token| self.token(token));
+            return;
+        };
+        let mut values = [0.0; 13];
         let mut n = 0;
         let mut put = |v: &[f32]| {
             values[n..n + v.len()].copy_from_slice(v);
             n += v.len();
         };
+        if let Some(token) = token {
+            put(&[token as f32]);
+        }
         put(&[vertex.window.x, vertex.window.y]);
         if layout.z {
             put(&[vertex.window.z]);

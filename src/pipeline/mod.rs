@@ -21,7 +21,7 @@ use crate::gl::*;
 use crate::lighting::FaceColors;
 use crate::lighting::batch::process_blocks;
 use assembly::{Assembler, Primitive};
-use block::{InputBlock, OutputBlock};
+use block::{InputBlock, OutputBlock, lanes4_get};
 use clip::{ClipPlanes, PolygonVertex, clip_line, clip_triangle, point_visible};
 use feedback::FeedbackVertex;
 use vertex::{DerivedState, ProcessedVertex};
@@ -132,8 +132,37 @@ impl Context {
     ) {
         let mut output = [OutputBlock::default()];
         process_blocks(derived, std::slice::from_ref(input), &mut output);
-        for lane in 0..output[0].len {
-            self.stream_vertex(stream, &output[0].vertex(lane));
+        let output = &output[0];
+        if stream.assembler.mode() == GL_POINTS && stream.capture.is_none() {
+            // Points need no assembly and no window of earlier vertices.
+            if self.render_mode != RenderMode::Render {
+                self.feedback_points(&stream.planes, output);
+            }
+            return;
+        }
+        for lane in 0..output.len {
+            self.stream_vertex(stream, &output.vertex(lane));
+        }
+    }
+
+    /// A block of points (front colors), each culled unless inside every plane: fed back or
+    /// selected lane by lane, the same as `feedback_point` for each.
+    fn feedback_points(&mut self, planes: &ClipPlanes, block: &OutputBlock) {
+        for lane in 0..block.len {
+            let clip = lanes4_get(&block.clip, lane);
+            if !planes.contain(clip, || lanes4_get(&block.eye, lane)) {
+                continue;
+            }
+            let window = self.raster.window(clip);
+            if self.selecting() {
+                self.selection.hit(window.z);
+                continue;
+            }
+            self.feedback.point(&FeedbackVertex {
+                window,
+                color: lanes4_get(&block.front_primary, lane),
+                tex_coord: lanes4_get(&block.tex_coord, lane),
+            });
         }
     }
 
