@@ -386,3 +386,42 @@ fn point_blocks_equal_the_per_vertex_path() {
         "only {drawn} values and hits: the test draws too little"
     );
 }
+
+/// Large glDrawArrays are lit on helper threads and streamed in order: the feedback is the
+/// same, token for token, whatever the thread count, for points and for a strip whose
+/// triangles span the chunks the helpers share out.
+#[test]
+fn draws_do_not_depend_on_the_thread_count() {
+    use fflight::commands::arrays::{ArraySources, ElementIndices};
+    use fflight::state::arrays::ArrayKind;
+    let mut rng = Rng(31);
+    let base = random_state(&mut rng);
+    let count = 2 * fflight::commands::capture::MIN_VERTICES_PER_THREAD + 1001;
+    let floats: Vec<f32> = (0..count * 3).map(|_| rng.uniform(-1.5, 1.5)).collect();
+    let bytes: Vec<u8> = floats.iter().flat_map(|f| f.to_ne_bytes()).collect();
+    let sources = ArraySources::new(0)
+        .with(ArrayKind::Vertex, &bytes)
+        .with(ArrayKind::Normal, &bytes);
+    for mode in [GL_POINTS, GL_TRIANGLE_STRIP] {
+        let mut results = Vec::new();
+        for threads in [1, 2, 3] {
+            fflight::threads::set_threads(threads).unwrap();
+            let mut ctx = base.clone();
+            ctx.vertex_pointer(3, GL_FLOAT, 0, 4096).unwrap();
+            ctx.normal_pointer(GL_FLOAT, 0, 4096).unwrap();
+            ctx.client_state(GL_VERTEX_ARRAY, true).unwrap();
+            ctx.client_state(GL_NORMAL_ARRAY, true).unwrap();
+            ctx.feedback_buffer(i32::MAX, GL_3D_COLOR, 1).unwrap();
+            ctx.render_mode(GL_FEEDBACK).unwrap();
+            let all = ElementIndices::Sequential { first: 0, count };
+            ctx.draw_arrays_from(mode, &sources, &all).unwrap();
+            let (written, finished) = ctx.render_mode(GL_RENDER).unwrap();
+            let values = finished.expect("feedback ended").values;
+            assert!(written > 10_000, "{written} values");
+            results.push(values.iter().map(|v| v.to_bits()).collect::<Vec<_>>());
+        }
+        fflight::threads::set_threads(0).unwrap();
+        assert!(results[1] == results[0], "2 threads, mode {mode:#x}");
+        assert!(results[2] == results[0], "3 threads, mode {mode:#x}");
+    }
+}

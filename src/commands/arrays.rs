@@ -16,13 +16,16 @@
 
 use glam::{Vec3, Vec4};
 
+use crate::commands::capture::MIN_VERTICES_PER_THREAD;
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use crate::lighting::lanes::LANES;
 use crate::pipeline::block::InputBlock;
 use crate::pipeline::fetch::ArrayFetch;
+use crate::pipeline::parallel::light_in_order;
 use crate::state::arrays::{ArrayKind, ByteSpan, ClientArray, VertexArrays};
+use crate::threads::thread_count;
 
 /// The size of one index of glDrawElements' `type`; `None` for an invalid type.
 pub fn index_size(index_type: GLenum) -> Option<usize> {
@@ -428,6 +431,21 @@ impl Context {
         let derived = self.shared_derived();
         let mut input = InputBlock::with_attribs(&self.current);
         let mut stream = self.begin_stream(mode);
+        if let ElementIndices::Sequential { first, count } = *indices {
+            let threads = thread_count().min(count / MIN_VERTICES_PER_THREAD);
+            if threads > 1 {
+                let fill = |block: usize, input: &mut InputBlock| {
+                    let start = first + block * LANES;
+                    let indices: [usize; LANES] = std::array::from_fn(|lane| start + lane);
+                    fetch.fill(input, &indices[..LANES.min(first + count - start)]);
+                };
+                let blocks = count.div_ceil(LANES);
+                light_in_order(&derived, &input, blocks, threads - 1, fill, |lit| {
+                    self.stream_lit_block(&mut stream, lit)
+                });
+                return self.end_stream(stream);
+            }
+        }
         let mut block = [0; LANES];
         let mut len = 0;
         let mut run_block = |ctx: &mut Context, block: &[usize]| {

@@ -43,19 +43,26 @@ impl ClipPlanes {
         }
     }
 
-    /// Whether a point at `clip` (in eye coordinates `eye()`, asked only when user planes are
-    /// enabled) is inside every plane: `outside_mask` is 0.
-    pub fn contain(&self, clip: Vec4, eye: impl FnOnce() -> Vec4) -> bool {
-        // The view volume's distances, with `outside_mask`'s NaN rule: x * 0 in a plane's dot
-        // product is NaN only when x is infinite, and then another plane is negative or NaN.
-        let [x, y, z, w] = clip.to_array();
-        let inside = [w - x, w + x, w - y, w + y, w + z, w - z]
-            .into_iter()
-            .all(|distance| distance >= 0.0);
-        inside && {
-            let eye = eye().as_dvec4();
-            self.user.iter().all(|plane| plane.dot(eye) as f32 >= 0.0)
-        }
+    /// Whether the clip-space point `[x, y, z, w]` is inside the view volume: the six view
+    /// planes of `outside_mask` are 0 for it. (`outside_mask`'s dot products multiply x, y or
+    /// z by 0, which is NaN only for an infinite x, y or z, and then another plane's distance
+    /// is negative or NaN.)
+    #[inline(always)]
+    pub fn in_view_volume([x, y, z, w]: [f32; 4]) -> bool {
+        let distances = [w - x, w + x, w - y, w + y, w + z, w - z];
+        distances
+            .iter()
+            .fold(true, |inside, &d| inside & (d >= 0.0))
+    }
+
+    pub fn has_user_planes(&self) -> bool {
+        !self.user.is_empty()
+    }
+
+    /// Whether a point at `eye` (eye coordinates) is inside every user plane.
+    pub fn user_contain(&self, eye: Vec4) -> bool {
+        let eye = eye.as_dvec4();
+        self.user.iter().all(|plane| plane.dot(eye) as f32 >= 0.0)
     }
 
     /// One bit per plane that `v` is outside of.

@@ -4,6 +4,8 @@ use glam::Vec4;
 
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
+use crate::lighting::lanes::LANES;
+use crate::pipeline::block::Lanes4;
 
 /// Copies `values` to the start of `to`: a vertex (at most 13 values, token included) with a
 /// copy of fixed length, which compiles to a few moves where a copy of any length calls memcpy.
@@ -17,6 +19,48 @@ fn copy_short(to: &mut [f32], values: &[f32]) {
         };
     }
     fixed!(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13)
+}
+
+/// The most values a fed-back point takes: its token and a GL_4D_COLOR_TEXTURE vertex.
+const MAX_POINT_VALUES: usize = 13;
+
+/// Lays out the points of a block's `[window, color, tex_coord]` whose lanes are `visible`
+/// as feedback does (GL_POINT_TOKEN, then the values of `FeedbackBuffer::vertex`); returns
+/// how many values it wrote. Z, W, COLOR and TEXTURE are the layout's. Every lane is written
+/// and only the visible ones kept, so the loop does not branch.
+#[inline(always)]
+fn encode_points<const Z: bool, const W: bool, const COLOR: bool, const TEXTURE: bool>(
+    visible: &[bool; LANES],
+    [window, color, tex_coord]: [&Lanes4; 3],
+    out: &mut [f32; LANES * MAX_POINT_VALUES],
+) -> usize {
+    let per_point = 3 + Z as usize + W as usize + 4 * COLOR as usize + 4 * TEXTURE as usize;
+    let mut n = 0;
+    for lane in 0..LANES {
+        let mut point = [GL_POINT_TOKEN as f32; MAX_POINT_VALUES];
+        let mut k = 1;
+        let mut put = |value: f32| {
+            point[k] = value;
+            k += 1;
+        };
+        put(window[0][lane]);
+        put(window[1][lane]);
+        if Z {
+            put(window[2][lane]);
+        }
+        if W {
+            put(window[3][lane]);
+        }
+        if COLOR {
+            (0..4).for_each(|c| put(color[c][lane]));
+        }
+        if TEXTURE {
+            (0..4).for_each(|c| put(tex_coord[c][lane]));
+        }
+        out[n..n + per_point].copy_from_slice(&point[..per_point]);
+        n += per_point * usize::from(visible[lane]);
+    }
+    n
 }
 
 /// Which values a fed-back vertex carries (glFeedbackBuffer's `type`).
@@ -164,6 +208,42 @@ impl FeedbackBuffer {
     /// A point: GL_POINT_TOKEN and its vertex.
     pub fn point(&mut self, vertex: &FeedbackVertex) {
         self.token_and_vertex(Some(GL_POINT_TOKEN), vertex);
+    }
+
+    /// The points of a block in the lanes that are `visible`: window coordinates (w = clip
+    /// w), colors and texture coordinates, one component per array. The block's values are
+    /// laid out with code chosen once for the layout, then written with one copy.
+    pub fn points(
+        &mut self,
+        visible: &[bool; LANES],
+        window: &Lanes4,
+        color: &Lanes4,
+        tex_coord: &Lanes4,
+    ) {
+        let Some(layout) = self.layout else {
+            visible
+                .iter()
+                .filter(|&&v| v)
+                .for_each(|_| self.token(GL_POINT_TOKEN));
+            return;
+        };
+        let mut values = [0.0; LANES * MAX_POINT_VALUES];
+        let arrays = [window, color, tex_coord];
+        let out = &mut values;
+        let len = match (layout.z, layout.w, layout.color, layout.texture) {
+            (false, ..) => encode_points::<false, false, false, false>(visible, arrays, out),
+            (true, false, false, false) => {
+                encode_points::<true, false, false, false>(visible, arrays, out)
+            }
+            (true, false, true, false) => {
+                encode_points::<true, false, true, false>(visible, arrays, out)
+            }
+            (true, false, true, true) => {
+                encode_points::<true, false, true, true>(visible, arrays, out)
+            }
+            _ => encode_points::<true, true, true, true>(visible, arrays, out),
+        };
+        self.values_of(&values[..len]);
     }
 
     pub fn vertex(&mut self, vertex: &FeedbackVertex) {

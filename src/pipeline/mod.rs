@@ -10,6 +10,7 @@ pub mod capture;
 pub mod clip;
 pub mod feedback;
 pub mod fetch;
+pub mod parallel;
 pub mod select;
 pub mod vertex;
 pub mod vertex_cache;
@@ -20,6 +21,7 @@ use crate::context::{Context, RenderMode};
 use crate::gl::*;
 use crate::lighting::FaceColors;
 use crate::lighting::batch::process_blocks;
+use crate::lighting::lanes::LANES;
 use assembly::{Assembler, Primitive};
 use block::{InputBlock, OutputBlock, lanes4_get};
 use clip::{ClipPlanes, PolygonVertex, clip_line, clip_triangle, point_visible};
@@ -132,7 +134,11 @@ impl Context {
     ) {
         let mut output = [OutputBlock::default()];
         process_blocks(derived, std::slice::from_ref(input), &mut output);
-        let output = &output[0];
+        self.stream_lit_block(stream, &output[0]);
+    }
+
+    /// Streams a processed block's vertices into the draw, in order.
+    pub(crate) fn stream_lit_block(&mut self, stream: &mut DrawStream, output: &OutputBlock) {
         if stream.assembler.mode() == GL_POINTS && stream.capture.is_none() {
             // Points need no assembly and no window of earlier vertices.
             if self.render_mode != RenderMode::Render {
@@ -148,21 +154,28 @@ impl Context {
     /// A block of points (front colors), each culled unless inside every plane: fed back or
     /// selected lane by lane, the same as `feedback_point` for each.
     fn feedback_points(&mut self, planes: &ClipPlanes, block: &OutputBlock) {
-        for lane in 0..block.len {
-            let clip = lanes4_get(&block.clip, lane);
-            if !planes.contain(clip, || lanes4_get(&block.eye, lane)) {
-                continue;
+        let map = self.raster.viewport_map();
+        let mut window = [[0.0; LANES]; 4];
+        let mut visible = [false; LANES];
+        for lane in 0..LANES {
+            let clip = lanes4_get(&block.clip, lane).to_array();
+            visible[lane] = lane < block.len && ClipPlanes::in_view_volume(clip);
+            for (component, value) in window.iter_mut().zip(map.window(clip)) {
+                component[lane] = value;
             }
-            let window = self.raster.window(clip);
-            if self.selecting() {
-                self.selection.hit(window.z);
-                continue;
+        }
+        if planes.has_user_planes() {
+            for (lane, visible) in visible.iter_mut().enumerate() {
+                *visible = *visible && planes.user_contain(lanes4_get(&block.eye, lane));
             }
-            self.feedback.point(&FeedbackVertex {
-                window,
-                color: lanes4_get(&block.front_primary, lane),
-                tex_coord: lanes4_get(&block.tex_coord, lane),
-            });
+        }
+        if self.selecting() {
+            for lane in (0..LANES).filter(|&lane| visible[lane]) {
+                self.selection.hit(window[2][lane]);
+            }
+        } else {
+            self.feedback
+                .points(&visible, &window, &block.front_primary, &block.tex_coord);
         }
     }
 

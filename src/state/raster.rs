@@ -60,16 +60,47 @@ pub const MAX_VIEWPORT_DIMS: i32 = 16384;
 impl RasterState {
     /// The viewport transform (§2.11.1) of a clip-space point: window x, y, z and the clip w.
     pub fn window(&self, clip: Vec4) -> Vec4 {
+        Vec4::from_array(self.viewport_map().window(clip.to_array()))
+    }
+
+    /// The viewport transform's constants, for mapping many points.
+    pub fn viewport_map(&self) -> ViewportMap {
         let [x, y, width, height] = self.viewport;
         let [near, far] = self.depth_range;
-        let ndc = clip.truncate() / clip.w;
         let half_width = width as f32 / 2.0;
         let half_height = height as f32 / 2.0;
-        Vec4::new(
-            ndc.x * half_width + (x as f32 + half_width),
-            ndc.y * half_height + (y as f32 + half_height),
-            (ndc.z as f64 * (far - near) / 2.0 + (near + far) / 2.0) as f32,
-            clip.w,
-        )
+        ViewportMap {
+            half_width,
+            x_center: x as f32 + half_width,
+            half_height,
+            y_center: y as f32 + half_height,
+            depth_range: far - near,
+            depth_center: (near + far) / 2.0,
+        }
+    }
+}
+
+/// The viewport transform (§2.11.1) with its constants computed once.
+#[derive(Clone, Copy, Debug)]
+pub struct ViewportMap {
+    half_width: f32,
+    x_center: f32,
+    half_height: f32,
+    y_center: f32,
+    depth_range: f64,
+    depth_center: f64,
+}
+
+impl ViewportMap {
+    /// Window x, y, z and the clip w of the clip-space point `[x, y, z, w]`.
+    #[inline(always)]
+    pub fn window(&self, [x, y, z, w]: [f32; 4]) -> [f32; 4] {
+        let (x, y, z) = (x / w, y / w, z / w);
+        [
+            x * self.half_width + self.x_center,
+            y * self.half_height + self.y_center,
+            (z as f64 * self.depth_range / 2.0 + self.depth_center) as f32,
+            w,
+        ]
     }
 }
