@@ -28,16 +28,11 @@ static GLfloat texcoords[COUNT][2];
 static GLfloat feedback[FEEDBACK];
 static ffl_fb fb;
 
-/* Starts a feedback pass whose next draw is marked as primitive `mode`
- * (ffl_fb_begin without the glBegin, for the array draws). */
 static void start(GLenum mode)
 {
-    int id;
     ffl_fb_init(&fb);
     ffl_fb_start(&fb, feedback, FEEDBACK, GL_4D_COLOR_TEXTURE);
-    id = fb.nprims++;
-    fb.modes[id] = mode;
-    glPassThrough(FFL_PRIM_MARK + (GLfloat)id);
+    ffl_fb_mark(&fb, mode);
 }
 
 static int finish(const char *label)

@@ -296,12 +296,19 @@ static inline void ffl_fb_start(ffl_fb *fb, GLfloat *buf, GLsizei size, GLenum t
     glRenderMode(GL_FEEDBACK);
 }
 
-/* glPassThrough(marker) then glBegin(mode). */
-static inline void ffl_fb_begin(ffl_fb *fb, GLenum mode)
+/* glPassThrough(marker): what follows is drawn as primitive `mode` (an array
+ * draw, or the glBegin of ffl_fb_begin). */
+static inline void ffl_fb_mark(ffl_fb *fb, GLenum mode)
 {
     int id = fb->nprims < FFL_MAX_PRIMS ? fb->nprims++ : FFL_MAX_PRIMS - 1;
     fb->modes[id] = mode;
     glPassThrough(FFL_PRIM_MARK + (GLfloat)id);
+}
+
+/* glPassThrough(marker) then glBegin(mode). */
+static inline void ffl_fb_begin(ffl_fb *fb, GLenum mode)
+{
+    ffl_fb_mark(fb, mode);
     glBegin(mode);
 }
 

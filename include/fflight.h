@@ -28,6 +28,11 @@ typedef float GLclampf;
 typedef double GLdouble;
 typedef double GLclampd;
 #endif
+#ifndef GL_VERSION_1_5
+#include <stddef.h>
+typedef ptrdiff_t GLsizeiptr;
+typedef ptrdiff_t GLintptr;
+#endif
 
 /*
  A context as applications hold it (`FflContext *` in C).
@@ -993,6 +998,110 @@ typedef struct FflCapturedPrimitive {
 #define GL_TEXTURE_GEN_Q 3171
 #endif
 
+#ifndef GL_ARRAY_BUFFER
+#define GL_ARRAY_BUFFER 34962
+#endif
+
+#ifndef GL_ELEMENT_ARRAY_BUFFER
+#define GL_ELEMENT_ARRAY_BUFFER 34963
+#endif
+
+#ifndef GL_ARRAY_BUFFER_BINDING
+#define GL_ARRAY_BUFFER_BINDING 34964
+#endif
+
+#ifndef GL_ELEMENT_ARRAY_BUFFER_BINDING
+#define GL_ELEMENT_ARRAY_BUFFER_BINDING 34965
+#endif
+
+#ifndef GL_VERTEX_ARRAY_BUFFER_BINDING
+#define GL_VERTEX_ARRAY_BUFFER_BINDING 34966
+#endif
+
+#ifndef GL_NORMAL_ARRAY_BUFFER_BINDING
+#define GL_NORMAL_ARRAY_BUFFER_BINDING 34967
+#endif
+
+#ifndef GL_COLOR_ARRAY_BUFFER_BINDING
+#define GL_COLOR_ARRAY_BUFFER_BINDING 34968
+#endif
+
+#ifndef GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING
+#define GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING 34970
+#endif
+
+#ifndef GL_EDGE_FLAG_ARRAY_BUFFER_BINDING
+#define GL_EDGE_FLAG_ARRAY_BUFFER_BINDING 34971
+#endif
+
+#ifndef GL_STREAM_DRAW
+#define GL_STREAM_DRAW 35040
+#endif
+
+#ifndef GL_STREAM_READ
+#define GL_STREAM_READ 35041
+#endif
+
+#ifndef GL_STREAM_COPY
+#define GL_STREAM_COPY 35042
+#endif
+
+#ifndef GL_STATIC_DRAW
+#define GL_STATIC_DRAW 35044
+#endif
+
+#ifndef GL_STATIC_READ
+#define GL_STATIC_READ 35045
+#endif
+
+#ifndef GL_STATIC_COPY
+#define GL_STATIC_COPY 35046
+#endif
+
+#ifndef GL_DYNAMIC_DRAW
+#define GL_DYNAMIC_DRAW 35048
+#endif
+
+#ifndef GL_DYNAMIC_READ
+#define GL_DYNAMIC_READ 35049
+#endif
+
+#ifndef GL_DYNAMIC_COPY
+#define GL_DYNAMIC_COPY 35050
+#endif
+
+#ifndef GL_READ_ONLY
+#define GL_READ_ONLY 35000
+#endif
+
+#ifndef GL_WRITE_ONLY
+#define GL_WRITE_ONLY 35001
+#endif
+
+#ifndef GL_READ_WRITE
+#define GL_READ_WRITE 35002
+#endif
+
+#ifndef GL_BUFFER_SIZE
+#define GL_BUFFER_SIZE 34660
+#endif
+
+#ifndef GL_BUFFER_USAGE
+#define GL_BUFFER_USAGE 34661
+#endif
+
+#ifndef GL_BUFFER_ACCESS
+#define GL_BUFFER_ACCESS 35003
+#endif
+
+#ifndef GL_BUFFER_MAPPED
+#define GL_BUFFER_MAPPED 35004
+#endif
+
+#ifndef GL_BUFFER_MAP_POINTER
+#define GL_BUFFER_MAP_POINTER 35005
+#endif
+
 
 
 
@@ -1068,8 +1177,9 @@ void glDrawArrays(GLenum mode, GLint first, GLsizei count);
 
 /*
  # Safety
- `indices` is NULL or points to `count` indices of `type_`; the enabled arrays' pointers
- must hold every element they reference.
+ `indices` is NULL or points to `count` indices of `type_` (an offset into the element
+ array buffer if one is bound); the enabled arrays' pointers must hold every element they
+ reference.
  */
 void glDrawElements(GLenum mode, GLsizei count, GLenum type_, const void *indices);
 
@@ -1486,6 +1596,59 @@ void glEdgeFlag(GLboolean flag);
  `flag` is NULL or points to one GLboolean.
  */
 void glEdgeFlagv(const GLboolean *flag);
+
+/*
+ # Safety
+ `buffers` is NULL or has room for `n` names.
+ */
+void glGenBuffers(GLsizei n, GLuint *buffers);
+
+/*
+ # Safety
+ `buffers` is NULL or points to `n` names.
+ */
+void glDeleteBuffers(GLsizei n, const GLuint *buffers);
+
+void glBindBuffer(GLenum target, GLuint buffer);
+
+GLboolean glIsBuffer(GLuint buffer);
+
+/*
+ # Safety
+ `data` is NULL (a zeroed store) or points to `size` readable bytes.
+ */
+void glBufferData(GLenum target, GLsizeiptr size, const void *data, GLenum usage);
+
+/*
+ # Safety
+ `data` is NULL or points to `size` readable bytes.
+ */
+void glBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, const void *data);
+
+/*
+ # Safety
+ `data` is NULL or has room for `size` bytes.
+ */
+void glGetBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, void *data);
+
+/*
+ The pointer is valid until the buffer is unmapped, given new data or deleted.
+ */
+void *glMapBuffer(GLenum target, GLenum access);
+
+GLboolean glUnmapBuffer(GLenum target);
+
+/*
+ # Safety
+ `params` is NULL or has room for one value.
+ */
+void glGetBufferParameteriv(GLenum target, GLenum pname, GLint *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for one pointer.
+ */
+void glGetBufferPointerv(GLenum target, GLenum pname, void **params);
 
 /*
  Starts capturing the vertices and primitives of every draw (glBegin/glEnd and vertex

@@ -895,6 +895,8 @@ c_programs!(
     shade_model_smooth,
     random_meshes,
     arrays_types,
+    buffer_objects,
+    buffer_osmesa_diff_mapped_draw,
     arrays_draws,
     arrays_interleaved,
     arrays_errors,

@@ -369,7 +369,7 @@ const CAPS: [GLenum; 56] = [
 /// How many of `CAPS` are capabilities.
 const VALID_CAPS: usize = 53;
 /// Every glGet pname fflight answers, besides the capabilities.
-const GET_PNAMES: [GLenum; 75] = [
+const GET_PNAMES: [GLenum; 82] = [
     GL_MAX_LIGHTS,
     GL_MAX_CLIP_PLANES,
     GL_MAX_VIEWPORT_DIMS,
@@ -445,6 +445,32 @@ const GET_PNAMES: [GLenum; 75] = [
     GL_TEXTURE_COORD_ARRAY_TYPE,
     GL_TEXTURE_COORD_ARRAY_STRIDE,
     GL_EDGE_FLAG_ARRAY_STRIDE,
+    GL_ARRAY_BUFFER_BINDING,
+    GL_ELEMENT_ARRAY_BUFFER_BINDING,
+    GL_VERTEX_ARRAY_BUFFER_BINDING,
+    GL_NORMAL_ARRAY_BUFFER_BINDING,
+    GL_COLOR_ARRAY_BUFFER_BINDING,
+    GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING,
+    GL_EDGE_FLAG_ARRAY_BUFFER_BINDING,
+];
+const BUFFER_TARGETS: [GLenum; 2] = [GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER];
+const BUFFER_USAGES: [GLenum; 9] = [
+    GL_STREAM_DRAW,
+    GL_STREAM_READ,
+    GL_STREAM_COPY,
+    GL_STATIC_DRAW,
+    GL_STATIC_READ,
+    GL_STATIC_COPY,
+    GL_DYNAMIC_DRAW,
+    GL_DYNAMIC_READ,
+    GL_DYNAMIC_COPY,
+];
+const BUFFER_ACCESSES: [GLenum; 3] = [GL_READ_ONLY, GL_WRITE_ONLY, GL_READ_WRITE];
+const BUFFER_PNAMES: [GLenum; 4] = [
+    GL_BUFFER_SIZE,
+    GL_BUFFER_USAGE,
+    GL_BUFFER_ACCESS,
+    GL_BUFFER_MAPPED,
 ];
 const MATRIX_MODES: [GLenum; 3] = [GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE];
 const PRIMITIVES: [GLenum; 10] = [
@@ -743,6 +769,33 @@ enum Op {
     GetPointer(GLenum),
     /// get_error: checked against the first error recorded since the last one.
     GetError,
+    /// The buffer object commands (§2.9); `data` says whether glBufferData copies bytes.
+    GenBuffers(i32),
+    BindBuffer {
+        target: GLenum,
+        name: u32,
+    },
+    DeleteBuffers(Vec<u32>),
+    BufferData {
+        target: GLenum,
+        size: isize,
+        data: bool,
+        usage: GLenum,
+    },
+    BufferSubData {
+        target: GLenum,
+        offset: isize,
+        size: isize,
+    },
+    MapBuffer {
+        target: GLenum,
+        access: GLenum,
+    },
+    UnmapBuffer(GLenum),
+    GetBufferParameter {
+        target: GLenum,
+        pname: GLenum,
+    },
 }
 
 impl Op {
@@ -759,6 +812,7 @@ impl Op {
                 | Op::GetPointer(_)
                 | Op::GetError
                 | Op::Finish
+                | Op::GetBufferParameter { .. }
         )
     }
 
@@ -937,6 +991,28 @@ impl Op {
             }
             Op::GetString(name) => !valid(name, &STRING_NAMES),
             Op::GetPointer(pname) => !valid(pname, &POINTER_PNAMES),
+            Op::GenBuffers(n) => n < 0,
+            Op::BindBuffer { target, .. } | Op::UnmapBuffer(target) => {
+                !valid(target, &BUFFER_TARGETS)
+            }
+            // With nothing bound these fail too (GL_INVALID_OPERATION).
+            Op::BufferData {
+                target,
+                size,
+                usage,
+                ..
+            } => !valid(target, &BUFFER_TARGETS) || size < 0 || !valid(usage, &BUFFER_USAGES),
+            Op::BufferSubData {
+                target,
+                offset,
+                size,
+            } => !valid(target, &BUFFER_TARGETS) || offset < 0 || size < 0,
+            Op::MapBuffer { target, access } => {
+                !valid(target, &BUFFER_TARGETS) || !valid(access, &BUFFER_ACCESSES)
+            }
+            Op::GetBufferParameter { target, pname } => {
+                !valid(target, &BUFFER_TARGETS) || !valid(pname, &BUFFER_PNAMES)
+            }
             _ => false,
         }
     }
@@ -1010,10 +1086,49 @@ impl ArrayBytes {
     }
 }
 
+/// A buffer object command: small names (so binds, deletes and draws meet), sizes and offsets
+/// around a small store, now and then negative or huge.
+fn buffer_op(rng: &mut Rng) -> Op {
+    let target = rng.enumeration(&BUFFER_TARGETS);
+    let size = |rng: &mut Rng| match rng.below(8) {
+        0 => -(rng.below(3) as isize) - 1,
+        1 => isize::MAX - rng.below(2) as isize,
+        _ => rng.below(64) as isize,
+    };
+    match rng.below(8) {
+        0 => Op::GenBuffers(rng.range(-1, 4) as i32),
+        1 | 2 => Op::BindBuffer {
+            target,
+            name: rng.below(5) as u32,
+        },
+        3 => Op::DeleteBuffers((0..rng.below(3)).map(|_| rng.below(5) as u32).collect()),
+        4 => Op::BufferData {
+            target,
+            size: size(rng),
+            data: rng.coin(),
+            usage: rng.enumeration(&BUFFER_USAGES),
+        },
+        5 => Op::BufferSubData {
+            target,
+            offset: size(rng),
+            size: size(rng),
+        },
+        6 => Op::MapBuffer {
+            target,
+            access: rng.enumeration(&BUFFER_ACCESSES),
+        },
+        _ if rng.coin() => Op::UnmapBuffer(target),
+        _ => Op::GetBufferParameter {
+            target,
+            pname: rng.enumeration(&BUFFER_PNAMES),
+        },
+    }
+}
+
 /// Any command, arguments half valid, half not.
 fn any_op(rng: &mut Rng, finite: bool) -> Op {
     let f = finite;
-    match rng.below(88) {
+    match rng.below(92) {
         0..=2 => Op::Light {
             light: rng.enumeration(&LIGHTS),
             pname: rng.enumeration(&LIGHT_PNAMES),
@@ -1197,6 +1312,7 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
         76..=79 => Op::GetError,
         80 => select_buffer(rng),
         81 => Op::RenderMode(GL_SELECT),
+        88..=91 => buffer_op(rng),
         _ => name_op(rng),
     }
 }
@@ -1595,6 +1711,39 @@ fn apply(
         Op::GetString(name) => unit(ctx.get_string(*name)),
         Op::GetPointer(pname) => unit(ctx.get_pointer(*pname)),
         Op::GetError => unreachable!("the driver reads the error flag"),
+        Op::GenBuffers(n) => ctx.gen_buffers(*n).map(drop),
+        Op::BindBuffer { target, name } => ctx.bind_buffer(*target, *name),
+        Op::DeleteBuffers(names) => ctx.delete_buffers(names),
+        Op::BufferData {
+            target,
+            size,
+            data,
+            usage,
+        } => {
+            // Bytes only for sizes that fit in memory; a huge store is asked for zeroed.
+            let bytes: Vec<u8> = (0..(*size).clamp(0, 1 << 16)).map(|i| i as u8).collect();
+            let data = (*data && *size <= 1 << 16).then_some(bytes.as_slice());
+            ctx.buffer_data(*target, *size, data, *usage)
+        }
+        Op::BufferSubData {
+            target,
+            offset,
+            size,
+        } => {
+            let bytes = vec![0xA5; (*size).clamp(0, 1 << 16) as usize];
+            match usize::try_from(*size) {
+                Ok(n) if n > bytes.len() => {
+                    // More than the test holds: only the checks run (no store is that big).
+                    ctx.get_buffer_sub_data(*target, *offset, *size).map(drop)
+                }
+                _ => ctx.buffer_sub_data(*target, *offset, *size, &bytes),
+            }
+        }
+        Op::MapBuffer { target, access } => ctx.map_buffer(*target, *access).map(drop),
+        Op::UnmapBuffer(target) => ctx.unmap_buffer(*target).map(drop),
+        Op::GetBufferParameter { target, pname } => {
+            ctx.get_buffer_parameter(*target, *pname).map(drop)
+        }
     };
     (result, check)
 }
@@ -1779,6 +1928,7 @@ enum Key {
     Selection,
     NameStack,
     MatrixStack(GLenum, usize),
+    Buffer(GLenum),
 }
 
 /// Everything the public queries report about a context, as bits (NaN equals itself, 0 and
@@ -1853,6 +2003,20 @@ impl Snapshot {
         for pname in POINTER_PNAMES {
             let address = c.get_pointer(pname).expect("a pointer");
             s.push(Key::Pointer(pname), [address as u64]);
+        }
+        // The bound buffers: parameters and contents (when not mapped).
+        for target in BUFFER_TARGETS {
+            let values = s.start(Key::Buffer(target));
+            for pname in BUFFER_PNAMES {
+                match c.get_buffer_parameter(target, pname) {
+                    Ok(value) => values.push(value as u32 as u64),
+                    Err(error) => values.push(ERROR_TAG | error.code() as u64),
+                }
+            }
+            let size = c.get_buffer_parameter(target, GL_BUFFER_SIZE).unwrap_or(0);
+            if let Ok(bytes) = c.get_buffer_sub_data(target, 0, size as isize) {
+                values.extend(bytes.iter().map(|&b| b as u64));
+            }
         }
         // Capture only grows (or restarts): its counts and last entries show any change.
         let capture = c.captured();

@@ -166,9 +166,39 @@ unsafe fn read_indices<'a>(indices: *const c_void, size: usize) -> GlResult<&'a 
     }
 }
 
+/// Draws the `size` bytes of indices at `indices`: an offset into the buffer bound to
+/// GL_ELEMENT_ARRAY_BUFFER if one is (GL_INVALID_OPERATION if they are not all in it),
+/// else an address.
+///
 /// # Safety
-/// `indices` is NULL or points to `count` indices of `type_`; the enabled arrays' pointers
-/// must hold every element they reference.
+/// Without an element array buffer, `indices` is NULL or points to `size` bytes; the
+/// enabled arrays' pointers must hold every element they reference.
+unsafe fn draw_elements(
+    ctx: &mut Context,
+    mode: GLenum,
+    index_type: GLenum,
+    indices: *const c_void,
+    size: usize,
+) -> GlResult {
+    let store = ctx.element_store()?;
+    let bytes = match &store {
+        Some(store) => {
+            let offset = indices as usize;
+            let range = offset..offset.checked_add(size).ok_or(GlError::InvalidOperation)?;
+            store.get(range).ok_or(GlError::InvalidOperation)?
+        }
+        // SAFETY: forwarded from the caller.
+        None => unsafe { read_indices(indices, size)? },
+    };
+    let indices = ElementIndices::Listed { index_type, bytes };
+    // SAFETY: forwarded from the caller.
+    unsafe { draw(ctx, mode, &indices) }
+}
+
+/// # Safety
+/// `indices` is NULL or points to `count` indices of `type_` (an offset into the element
+/// array buffer if one is bound); the enabled arrays' pointers must hold every element they
+/// reference.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn glDrawElements(
     mode: GLenum,
@@ -179,13 +209,7 @@ pub unsafe extern "C" fn glDrawElements(
     with_context(|ctx| {
         let size = ctx.check_draw_elements(mode, count, type_)?;
         // SAFETY: forwarded from the caller.
-        let bytes = unsafe { read_indices(indices, size)? };
-        let indices = ElementIndices::Listed {
-            index_type: type_,
-            bytes,
-        };
-        // SAFETY: forwarded from the caller.
-        unsafe { draw(ctx, mode, &indices) }
+        unsafe { draw_elements(ctx, mode, type_, indices, size) }
     })
 }
 
@@ -206,12 +230,6 @@ pub unsafe extern "C" fn glDrawRangeElements(
     with_context(|ctx| {
         let size = ctx.check_draw_range_elements(mode, start, end, count, type_)?;
         // SAFETY: forwarded from the caller.
-        let bytes = unsafe { read_indices(indices, size)? };
-        let indices = ElementIndices::Listed {
-            index_type: type_,
-            bytes,
-        };
-        // SAFETY: forwarded from the caller.
-        unsafe { draw(ctx, mode, &indices) }
+        unsafe { draw_elements(ctx, mode, type_, indices, size) }
     })
 }

@@ -7,6 +7,7 @@
 
 mod arrays;
 mod attribs;
+mod buffers;
 mod capture;
 mod context;
 mod feedback;

@@ -16,6 +16,7 @@
 
 use glam::{Vec3, Vec4};
 
+use crate::commands::buffers::with_stores;
 use crate::commands::capture::MIN_VERTICES_PER_THREAD;
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
@@ -361,7 +362,9 @@ impl Context {
     /// color). Legal between glBegin and glEnd, where the vertex joins the primitive.
     pub fn array_element_from(&mut self, index: usize, sources: &ArraySources) -> GlResult {
         let arrays = self.arrays;
-        let element = ArrayReader::new(&arrays, sources, index, index)?.element(index);
+        let stores = self.array_stores(&arrays)?;
+        let sources = with_stores(&arrays, sources, &stores);
+        let element = ArrayReader::new(&arrays, &sources, index, index)?.element(index);
         if let Some(flag) = element.edge_flag {
             self.edge_flag(flag);
         }
@@ -410,13 +413,18 @@ impl Context {
             }
         }
         let arrays = self.arrays;
-        if !arrays.get(ArrayKind::Vertex).enabled || !self.vertices_observed() {
+        if !arrays.get(ArrayKind::Vertex).enabled {
+            return Ok(());
+        }
+        let stores = self.array_stores(&arrays)?;
+        if !self.vertices_observed() {
             return Ok(());
         }
         let Some((first, last)) = indices.range() else {
             return Ok(());
         };
-        let reader = ArrayReader::new(&arrays, sources, first, last)?;
+        let sources = with_stores(&arrays, sources, &stores);
+        let reader = ArrayReader::new(&arrays, &sources, first, last)?;
         let fetch = ArrayFetch::new(reader.base, reader.arrays);
         self.draw_arrays_with(mode, &fetch, indices);
         Ok(())

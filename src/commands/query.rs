@@ -179,6 +179,17 @@ impl Context {
             }
             GL_TEXTURE_COORD_ARRAY_STRIDE => int(self.arrays.get(ArrayKind::TexCoord).stride),
             GL_EDGE_FLAG_ARRAY_STRIDE => int(self.arrays.get(ArrayKind::EdgeFlag).stride),
+            GL_ARRAY_BUFFER_BINDING => int(self.arrays.array_buffer as i32),
+            GL_ELEMENT_ARRAY_BUFFER_BINDING => int(self.arrays.element_array_buffer as i32),
+            GL_VERTEX_ARRAY_BUFFER_BINDING => int(self.arrays.get(ArrayKind::Vertex).buffer as i32),
+            GL_NORMAL_ARRAY_BUFFER_BINDING => int(self.arrays.get(ArrayKind::Normal).buffer as i32),
+            GL_COLOR_ARRAY_BUFFER_BINDING => int(self.arrays.get(ArrayKind::Color).buffer as i32),
+            GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING => {
+                int(self.arrays.get(ArrayKind::TexCoord).buffer as i32)
+            }
+            GL_EDGE_FLAG_ARRAY_BUFFER_BINDING => {
+                int(self.arrays.get(ArrayKind::EdgeFlag).buffer as i32)
+            }
             _ => return Err(GlError::InvalidEnum),
         })
     }

@@ -104,8 +104,11 @@ pub struct ClientArray {
     pub component_type: GLenum,
     /// Bytes from one element to the next as specified: 0 means tightly packed.
     pub stride: i32,
-    /// The application's pointer as an address (0 = NULL). Only src/capi/ dereferences it.
+    /// The application's pointer as an address (0 = NULL), or with `buffer` an offset into
+    /// that buffer object's store. Only src/capi/ dereferences addresses.
     pub address: usize,
+    /// The buffer object the array is sourced from (§2.9.1), 0 for client memory.
+    pub buffer: u32,
 }
 
 impl ClientArray {
@@ -116,6 +119,7 @@ impl ClientArray {
             component_type,
             stride: 0,
             address: 0,
+            buffer: 0,
         }
     }
 
@@ -203,6 +207,10 @@ pub struct VertexArrays {
     /// GL_INDEX_ARRAY's enable: fflight has no color index mode, so it is only stored for
     /// glIsEnabled.
     pub index_enabled: bool,
+    /// The buffer objects bound to GL_ARRAY_BUFFER (copied into each array whose pointer is
+    /// set) and GL_ELEMENT_ARRAY_BUFFER (where glDrawElements finds its indices).
+    pub array_buffer: u32,
+    pub element_array_buffer: u32,
 }
 
 impl Default for VertexArrays {
@@ -216,6 +224,8 @@ impl Default for VertexArrays {
                 ClientArray::initial(1, GL_UNSIGNED_BYTE),
             ],
             index_enabled: false,
+            array_buffer: 0,
+            element_array_buffer: 0,
         }
     }
 }
@@ -248,7 +258,15 @@ impl VertexArrays {
         array.component_type = component_type;
         array.stride = stride;
         array.address = address;
+        array.buffer = self.array_buffer;
         Ok(())
+    }
+
+    /// The arrays sourced from buffer object `name` go back to client memory (it was deleted).
+    pub fn reset_buffer(&mut self, name: u32) {
+        for array in self.arrays.iter_mut().filter(|array| array.buffer == name) {
+            array.buffer = 0;
+        }
     }
 
     /// glEnableClientState / glDisableClientState.
@@ -277,13 +295,14 @@ impl VertexArrays {
             .filter(|(_, array)| array.enabled)
     }
 
-    /// Where the bytes of elements `first..=last` of every enabled array are: what the C
-    /// layer may read for a draw using those elements. A NULL pointer is GL's undefined
-    /// behavior; fflight's documented choice is GL_INVALID_OPERATION (nothing is drawn).
+    /// Where the bytes of elements `first..=last` of every enabled array in client memory
+    /// are: what the C layer may read for a draw using those elements (arrays in buffer
+    /// objects are the context's to read). A NULL pointer is GL's undefined behavior;
+    /// fflight's documented choice is GL_INVALID_OPERATION (nothing is drawn).
     /// GL_INVALID_VALUE when the range does not fit the address space.
     pub fn spans(&self, first: usize, last: usize) -> GlResult<[Option<ByteSpan>; 5]> {
         let mut spans = [None; 5];
-        for (kind, array) in self.enabled() {
+        for (kind, array) in self.enabled().filter(|(_, array)| array.buffer == 0) {
             if array.address == 0 {
                 return Err(GlError::InvalidOperation);
             }
@@ -302,16 +321,18 @@ impl VertexArrays {
     }
 
     /// glInterleavedArrays (§2.8, table 2.5): sets and enables the arrays `format` packs,
-    /// disables the others. A NULL `address` leaves every pointer NULL (rather than small
-    /// offsets from NULL, which fflight, having no buffer objects, could only crash on).
+    /// disables the others. In client memory a NULL `address` leaves every pointer NULL
+    /// (rather than small offsets from NULL, which could only crash); in a buffer object it
+    /// is offset 0.
     pub fn set_interleaved(&mut self, format: GLenum, stride: i32, address: usize) -> GlResult {
         if stride < 0 {
             return Err(GlError::InvalidValue);
         }
         let layout = InterleavedLayout::of(format)?;
         let stride = if stride == 0 { layout.stride } else { stride };
+        let in_buffer = self.array_buffer != 0;
         let at = |offset: usize| {
-            if address == 0 {
+            if address == 0 && !in_buffer {
                 0
             } else {
                 address.wrapping_add(offset)
@@ -333,6 +354,7 @@ impl VertexArrays {
                 array.component_type = component_type;
                 array.stride = stride;
                 array.address = at(offset);
+                array.buffer = self.array_buffer;
             }
         }
         Ok(())

@@ -1,0 +1,175 @@
+//! Buffer objects (§2.9): glGenBuffers, glDeleteBuffers, glBindBuffer, glIsBuffer,
+//! glBufferData, glBufferSubData, glGetBufferSubData, glMapBuffer, glUnmapBuffer,
+//! glGetBufferParameteriv, glGetBufferPointerv; and the stores a draw reads its arrays from.
+
+use std::sync::Arc;
+
+use crate::commands::arrays::ArraySources;
+use crate::context::Context;
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+use crate::state::arrays::{ALL_KINDS, VertexArrays};
+use crate::state::buffers::check_target;
+
+/// The stores of the enabled arrays sourced from buffer objects, held for one draw.
+pub type ArrayStores = [Option<Arc<Vec<u8>>>; 5];
+
+impl Context {
+    /// The buffer object name bound to `target` (0 if none): GL_INVALID_ENUM for another
+    /// target.
+    fn buffer_binding(&self, target: GLenum) -> GlResult<GLuint> {
+        check_target(target)?;
+        Ok(if target == GL_ARRAY_BUFFER {
+            self.arrays.array_buffer
+        } else {
+            self.arrays.element_array_buffer
+        })
+    }
+
+    /// The checks every buffer command starts with: outside glBegin/glEnd, a valid target.
+    fn bound_buffer(&self, target: GLenum) -> GlResult<GLuint> {
+        self.outside_begin_end()?;
+        self.buffer_binding(target)
+    }
+
+    /// glGenBuffers.
+    pub fn gen_buffers(&mut self, count: i32) -> GlResult<Vec<GLuint>> {
+        self.outside_begin_end()?;
+        let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
+        Ok(self.buffers.generate(count))
+    }
+
+    /// glDeleteBuffers: every binding to a deleted object, the arrays' included, returns to 0.
+    pub fn delete_buffers(&mut self, names: &[GLuint]) -> GlResult {
+        self.outside_begin_end()?;
+        for &name in names {
+            if self.buffers.delete(name) {
+                let arrays = &mut self.arrays;
+                for binding in [&mut arrays.array_buffer, &mut arrays.element_array_buffer] {
+                    if *binding == name {
+                        *binding = 0;
+                    }
+                }
+                arrays.reset_buffer(name);
+            }
+        }
+        Ok(())
+    }
+
+    /// glBindBuffer: binding an unused name creates its object.
+    pub fn bind_buffer(&mut self, target: GLenum, name: GLuint) -> GlResult {
+        self.bound_buffer(target)?;
+        self.buffers.bind(name);
+        if target == GL_ARRAY_BUFFER {
+            self.arrays.array_buffer = name;
+        } else {
+            self.arrays.element_array_buffer = name;
+        }
+        Ok(())
+    }
+
+    /// glIsBuffer.
+    pub fn is_buffer(&self, name: GLuint) -> GlResult<bool> {
+        self.outside_begin_end()?;
+        Ok(self.buffers.is_buffer(name))
+    }
+
+    /// glBufferData: `data` holds `size` bytes, or is `None` for a zeroed store.
+    pub fn buffer_data(
+        &mut self,
+        target: GLenum,
+        size: isize,
+        data: Option<&[u8]>,
+        usage: GLenum,
+    ) -> GlResult {
+        let name = self.bound_buffer(target)?;
+        self.buffers.data(name, size, data, usage)
+    }
+
+    /// glBufferSubData: `data` holds `size` bytes.
+    pub fn buffer_sub_data(
+        &mut self,
+        target: GLenum,
+        offset: isize,
+        size: isize,
+        data: &[u8],
+    ) -> GlResult {
+        let name = self.bound_buffer(target)?;
+        let store = self.buffers.sub_data_mut(name, offset, size)?;
+        store.copy_from_slice(&data[..store.len()]);
+        Ok(())
+    }
+
+    /// glGetBufferSubData.
+    pub fn get_buffer_sub_data(
+        &self,
+        target: GLenum,
+        offset: isize,
+        size: isize,
+    ) -> GlResult<&[u8]> {
+        let name = self.bound_buffer(target)?;
+        self.buffers.sub_data(name, offset, size)
+    }
+
+    /// glMapBuffer: the address of the store, valid until it is unmapped, replaced or deleted.
+    pub fn map_buffer(&mut self, target: GLenum, access: GLenum) -> GlResult<usize> {
+        let name = self.bound_buffer(target)?;
+        self.buffers.map(name, access)
+    }
+
+    /// glUnmapBuffer.
+    pub fn unmap_buffer(&mut self, target: GLenum) -> GlResult<bool> {
+        let name = self.bound_buffer(target)?;
+        self.buffers.unmap(name)
+    }
+
+    /// glGetBufferParameteriv.
+    pub fn get_buffer_parameter(&self, target: GLenum, pname: GLenum) -> GlResult<i32> {
+        let name = self.bound_buffer(target)?;
+        self.buffers.parameter(name, pname)
+    }
+
+    /// glGetBufferPointerv.
+    pub fn get_buffer_pointer(&mut self, target: GLenum, pname: GLenum) -> GlResult<usize> {
+        let name = self.bound_buffer(target)?;
+        self.buffers.map_pointer(name, pname)
+    }
+
+    /// The stores of the enabled arrays that buffer objects hold, for a draw: GL_INVALID_OPERATION
+    /// if one is mapped.
+    pub(crate) fn array_stores(&self, arrays: &VertexArrays) -> GlResult<ArrayStores> {
+        let mut stores = ArrayStores::default();
+        for (kind, array) in arrays.enabled() {
+            stores[kind as usize] = self.buffers.store_for_draw(array.buffer)?;
+        }
+        Ok(stores)
+    }
+
+    /// The store of the buffer bound to GL_ELEMENT_ARRAY_BUFFER, if one is: glDrawElements'
+    /// indices are then an offset into it. GL_INVALID_OPERATION while it is mapped.
+    pub fn element_store(&self) -> GlResult<Option<Arc<Vec<u8>>>> {
+        self.buffers
+            .store_for_draw(self.arrays.element_array_buffer)
+    }
+}
+
+/// `sources` with the arrays held by buffer objects read from `stores`: each from its offset
+/// plus element `sources.base`. An offset past the store gives no bytes, which the draw's
+/// checks reject (GL_INVALID_OPERATION).
+pub(crate) fn with_stores<'a>(
+    arrays: &VertexArrays,
+    sources: &ArraySources<'a>,
+    stores: &'a ArrayStores,
+) -> ArraySources<'a> {
+    let mut sources = *sources;
+    for (kind, store) in ALL_KINDS.into_iter().zip(stores) {
+        let Some(store) = store else { continue };
+        let array = arrays.get(kind);
+        let start = sources
+            .base
+            .checked_mul(array.effective_stride())
+            .and_then(|offset| offset.checked_add(array.address));
+        sources.bytes[kind as usize] = start.and_then(|start| store.get(start..)).unwrap_or(&[]);
+    }
+    sources
+}
