@@ -65,14 +65,37 @@ impl ClipPlanes {
         self.user.iter().all(|plane| plane.dot(eye) as f32 >= 0.0)
     }
 
-    /// One bit per plane that `v` is outside of.
+    /// One bit per plane that `v` is outside of: its `distance` is negative or NaN.
     pub fn outside_mask(&self, v: &ProcessedVertex) -> u32 {
-        (0..self.count())
-            .filter(|&plane| {
-                let distance = self.distance(plane, v);
-                distance < 0.0 || distance.is_nan()
-            })
-            .fold(0, |mask, plane| mask | 1 << plane)
+        let outside = |distance: f32| u32::from(!(distance >= 0.0));
+        // The view planes' dot products, term by term: each is w ± one coordinate, plus the
+        // other two coordinates times 0, which is NaN (outside) when one of them is not finite.
+        let [x, y, z, w] = v.clip.to_array();
+        let finite = [x.is_finite(), y.is_finite(), z.is_finite()];
+        let others_finite = [
+            finite[1] & finite[2],
+            finite[0] & finite[2],
+            finite[0] & finite[1],
+        ];
+        let mut mask = 0;
+        for (axis, coordinate) in [x, y, z].into_iter().enumerate() {
+            let nan = u32::from(!others_finite[axis]);
+            // Planes 2 * axis (w - coordinate, except z: w + z) and 2 * axis + 1.
+            let (first, second) = if axis == 2 {
+                (w + coordinate, w - coordinate)
+            } else {
+                (w - coordinate, w + coordinate)
+            };
+            mask |= (outside(first) | nan) << (2 * axis);
+            mask |= (outside(second) | nan) << (2 * axis + 1);
+        }
+        if !self.user.is_empty() {
+            let eye = v.eye.as_dvec4();
+            for (k, equation) in self.user.iter().enumerate() {
+                mask |= outside(equation.dot(eye) as f32) << (VIEW_VOLUME.len() + k);
+            }
+        }
+        mask
     }
 
     fn is_user_plane(plane: usize) -> bool {
@@ -237,4 +260,49 @@ pub fn clip_triangle(
         polygon.clear();
     }
     true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `outside_mask` computes the view planes' dot products term by term: it must flag
+    /// exactly the planes whose `distance` (glam's dot product) is negative or NaN.
+    #[test]
+    fn outside_mask_equals_the_dot_products() {
+        let values = [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            0.5,
+            2.0,
+            -3.0,
+            1e30,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+        ];
+        let planes = ClipPlanes::new(vec![DVec4::new(1.0, -1.0, 0.5, 0.25)]);
+        let mut checked = 0;
+        for &x in &values {
+            for &y in &values {
+                for &z in &values {
+                    for &w in &values {
+                        let v = ProcessedVertex {
+                            clip: Vec4::new(x, y, z, w),
+                            eye: Vec4::new(w, z, y, x),
+                            ..Default::default()
+                        };
+                        let expected = (0..planes.count())
+                            .filter(|&p| !(planes.distance(p, &v) >= 0.0))
+                            .fold(0, |mask, p| mask | 1 << p);
+                        assert_eq!(planes.outside_mask(&v), expected, "{:?}", v.clip);
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert_eq!(checked, 11 * 11 * 11 * 11);
+    }
 }

@@ -21,8 +21,11 @@ fn copy_short(to: &mut [f32], values: &[f32]) {
     fixed!(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13)
 }
 
-/// The most values a fed-back point takes: its token and a GL_4D_COLOR_TEXTURE vertex.
-const MAX_POINT_VALUES: usize = 13;
+/// The most values a fed-back vertex takes: a GL_4D_COLOR_TEXTURE one.
+const MAX_VERTEX_VALUES: usize = 12;
+
+/// The most values a fed-back point takes: its token and a vertex.
+const MAX_POINT_VALUES: usize = 1 + MAX_VERTEX_VALUES;
 
 /// Lays out the points of a block's `[window, color, tex_coord]` whose lanes are `visible`
 /// as feedback does (GL_POINT_TOKEN, then the values of `FeedbackBuffer::vertex`); returns
@@ -74,6 +77,29 @@ pub struct FeedbackLayout {
 }
 
 impl FeedbackLayout {
+    /// Writes `vertex`'s values in this layout to the start of `out`; returns how many.
+    fn encode(&self, vertex: &FeedbackVertex, out: &mut [f32]) -> usize {
+        let mut n = 0;
+        let mut put = |v: &[f32]| {
+            out[n..n + v.len()].copy_from_slice(v);
+            n += v.len();
+        };
+        put(&[vertex.window.x, vertex.window.y]);
+        if self.z {
+            put(&[vertex.window.z]);
+        }
+        if self.w {
+            put(&[vertex.window.w]);
+        }
+        if self.color {
+            put(&vertex.color.to_array());
+        }
+        if self.texture {
+            put(&vertex.tex_coord.to_array());
+        }
+        n
+    }
+
     pub fn of(kind: GLenum) -> GlResult<FeedbackLayout> {
         let (z, w, color, texture) = match kind {
             GL_2D => (false, false, false, false),
@@ -257,27 +283,28 @@ impl FeedbackBuffer {
             token.into_iter().for_each(|token| self.token(token));
             return;
         };
-        let mut values = [0.0; 13];
+        let mut values = [0.0; MAX_POINT_VALUES];
         let mut n = 0;
-        let mut put = |v: &[f32]| {
-            values[n..n + v.len()].copy_from_slice(v);
-            n += v.len();
-        };
         if let Some(token) = token {
-            put(&[token as f32]);
+            values[0] = token as f32;
+            n = 1;
         }
-        put(&[vertex.window.x, vertex.window.y]);
-        if layout.z {
-            put(&[vertex.window.z]);
-        }
-        if layout.w {
-            put(&[vertex.window.w]);
-        }
-        if layout.color {
-            put(&vertex.color.to_array());
-        }
-        if layout.texture {
-            put(&vertex.tex_coord.to_array());
+        n += layout.encode(vertex, &mut values[n..]);
+        self.values_of(&values[..n]);
+    }
+
+    /// A triangle: GL_POLYGON_TOKEN, the count 3 and the three vertices, with one copy.
+    pub fn triangle(&mut self, corners: &[FeedbackVertex; 3]) {
+        let Some(layout) = self.layout else {
+            self.token(GL_POLYGON_TOKEN);
+            self.value(3.0);
+            return;
+        };
+        let mut values = [0.0; 2 + 3 * MAX_VERTEX_VALUES];
+        values[..2].copy_from_slice(&[GL_POLYGON_TOKEN as f32, 3.0]);
+        let mut n = 2;
+        for corner in corners {
+            n += layout.encode(corner, &mut values[n..]);
         }
         self.values_of(&values[..n]);
     }

@@ -344,11 +344,7 @@ impl Context {
                     self.feedback.line(&[fed[k], fed[(k + 1) % 3]]);
                 }
             }
-            _ => {
-                self.feedback.token(GL_POLYGON_TOKEN);
-                self.feedback.value(3.0);
-                fed.iter().for_each(|v| self.feedback.vertex(v));
-            }
+            _ => self.feedback.triangle(&fed),
         }
     }
 
