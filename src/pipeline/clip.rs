@@ -67,7 +67,7 @@ impl ClipPlanes {
 
     /// One bit per plane that `v` is outside of: its `distance` is negative or NaN.
     pub fn outside_mask(&self, v: &ProcessedVertex) -> u32 {
-        let outside = |distance: f32| u32::from(!(distance >= 0.0));
+        let outside = |distance: f32| u32::from(distance < 0.0 || distance.is_nan());
         // The view planes' dot products, term by term: each is w ± one coordinate, plus the
         // other two coordinates times 0, which is NaN (outside) when one of them is not finite.
         let [x, y, z, w] = v.clip.to_array();
@@ -295,7 +295,10 @@ mod tests {
                             ..Default::default()
                         };
                         let expected = (0..planes.count())
-                            .filter(|&p| !(planes.distance(p, &v) >= 0.0))
+                            .filter(|&p| {
+                                let d = planes.distance(p, &v);
+                                d < 0.0 || d.is_nan()
+                            })
                             .fold(0, |mask, p| mask | 1 << p);
                         assert_eq!(planes.outside_mask(&v), expected, "{:?}", v.clip);
                         checked += 1;
