@@ -1,28 +1,77 @@
-//! Large draws on several threads with their primitives in order: helper threads fetch and
-//! light chunks of blocks while the calling thread streams the lit chunks into assembly and
-//! feedback, chunk after chunk, exactly as one thread would. Each helper works through every
-//! `helpers`-th chunk with two chunk buffers that the calling thread hands back once
-//! streamed, so the working set is fixed whatever the draw's size.
+//! Large draws on several threads with their primitives in order: chunks of blocks are
+//! fetched and lit by helper threads and by the calling thread, whichever gets to them first,
+//! and the calling thread streams the lit chunks into assembly and feedback in order, exactly
+//! as one thread would. A fixed set of chunk buffers bounds how far lighting runs ahead, so
+//! the working set does not grow with the draw; and since the calling thread lights whatever
+//! is not claimed yet whenever the next chunk is not ready, a busy machine that leaves the
+//! helpers little time slows the draw to one thread's speed, not below.
 
-use std::sync::mpsc::{Receiver, SyncSender, sync_channel};
+use std::collections::BTreeMap;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::mpsc::channel;
+use std::sync::{Condvar, Mutex};
 
 use super::block::{InputBlock, OutputBlock};
 use super::vertex::DerivedState;
 use crate::lighting::batch::process_blocks;
 
-/// Blocks per chunk: a helper's unit of work (2048 vertices, about 230 KiB of lit blocks;
-/// large enough that handing chunks over costs little next to lighting them).
+/// Blocks per chunk: the unit of work (2048 vertices, about 230 KiB of lit blocks; large
+/// enough that handing chunks over costs little next to lighting them).
 const CHUNK_BLOCKS: usize = 256;
 
-/// Chunk buffers per helper: one being lit while the other is streamed.
-const BUFFERS_PER_HELPER: usize = 2;
+/// Chunk buffers per thread: one being lit while another waits to be streamed.
+const BUFFERS_PER_THREAD: usize = 2;
 
-/// A helper's channels, seen from the calling thread: lit chunks in, streamed chunks back.
-type HelperLane = (Receiver<Vec<OutputBlock>>, SyncSender<Vec<OutputBlock>>);
+type Chunk = Vec<OutputBlock>;
 
-/// Lights `blocks` blocks on `helpers` threads and gives them to `stream` in order on the
-/// calling thread. `fill(block, input)` puts block `block`'s vertices into `input` (which
-/// starts as `template`, and keeps what `fill` leaves there).
+/// The chunk buffers not in use. `None` once the draw is over, which sends waiting helpers
+/// home.
+struct FreeChunks {
+    chunks: Mutex<Option<Vec<Chunk>>>,
+    returned: Condvar,
+}
+
+impl FreeChunks {
+    /// A free buffer, waiting for one if `wait`; `None` when the draw is over (or, without
+    /// `wait`, when none is free).
+    fn take(&self, wait: bool) -> Option<Chunk> {
+        let mut free = self.chunks.lock().unwrap_or_else(|e| e.into_inner());
+        loop {
+            match free.as_mut()?.pop() {
+                Some(chunk) => return Some(chunk),
+                None if wait => free = self.returned.wait(free).unwrap_or_else(|e| e.into_inner()),
+                None => return None,
+            }
+        }
+    }
+
+    fn put(&self, chunk: Chunk) {
+        let mut free = self.chunks.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(free) = free.as_mut() {
+            free.push(chunk);
+            self.returned.notify_one();
+        }
+    }
+
+    /// Ends the draw (also when the calling thread unwinds): helpers stop waiting.
+    fn close(&self) {
+        *self.chunks.lock().unwrap_or_else(|e| e.into_inner()) = None;
+        self.returned.notify_all();
+    }
+}
+
+/// Closes the free list when dropped, so that helpers never wait for a caller that is gone.
+struct CloseOnDrop<'a>(&'a FreeChunks);
+
+impl Drop for CloseOnDrop<'_> {
+    fn drop(&mut self) {
+        self.0.close();
+    }
+}
+
+/// Lights `blocks` blocks with `helpers` helper threads besides the calling thread and gives
+/// them to `stream` in order on the calling thread. `fill(block, input)` puts block `block`'s
+/// vertices into `input` (which starts as `template`, and keeps what `fill` leaves there).
 pub fn light_in_order(
     derived: &DerivedState,
     template: &InputBlock,
@@ -32,46 +81,80 @@ pub fn light_in_order(
     mut stream: impl FnMut(&OutputBlock),
 ) {
     let chunks = blocks.div_ceil(CHUNK_BLOCKS);
-    let helpers = helpers.clamp(1, chunks.max(1));
+    let helpers = helpers.min(chunks.saturating_sub(1));
+    let free = FreeChunks {
+        chunks: Mutex::new(Some(
+            (0..BUFFERS_PER_THREAD * (helpers + 1))
+                .map(|_| vec![OutputBlock::default(); CHUNK_BLOCKS])
+                .collect(),
+        )),
+        returned: Condvar::new(),
+    };
+    let next_chunk = AtomicUsize::new(0);
+    // Claims the next chunk not yet claimed and lights it into `outputs`; gives `outputs`
+    // back when every chunk is claimed.
+    let light_next = |inputs: &mut [InputBlock], mut outputs: Chunk| {
+        let chunk = next_chunk.fetch_add(1, Ordering::Relaxed);
+        if chunk >= chunks {
+            return Err(outputs);
+        }
+        let first = chunk * CHUNK_BLOCKS;
+        let len = CHUNK_BLOCKS.min(blocks - first);
+        for (k, input) in inputs[..len].iter_mut().enumerate() {
+            fill(first + k, input);
+        }
+        outputs.truncate(len);
+        process_blocks(derived, &inputs[..len], &mut outputs);
+        Ok((chunk, outputs))
+    };
     std::thread::scope(|scope| {
-        let mut lanes: Vec<HelperLane> = Vec::with_capacity(helpers);
-        for helper in 0..helpers {
-            let (lit_tx, lit_rx) = sync_channel(BUFFERS_PER_HELPER);
-            let (free_tx, free_rx) = sync_channel(BUFFERS_PER_HELPER);
-            for _ in 0..BUFFERS_PER_HELPER {
-                free_tx
-                    .send(vec![OutputBlock::default(); CHUNK_BLOCKS])
-                    .expect("the receiver is here");
-            }
-            let fill = &fill;
+        let _close = CloseOnDrop(&free);
+        let (lit_tx, lit_rx) = channel::<(usize, Chunk)>();
+        for _ in 0..helpers {
+            let (free, light_next, lit_tx) = (&free, &light_next, lit_tx.clone());
             scope.spawn(move || {
-                let mut inputs = [*template; CHUNK_BLOCKS];
-                for chunk in (helper..chunks).step_by(helpers) {
-                    // The calling thread stopped taking chunks: it is unwinding.
-                    let Ok(mut outputs) = free_rx.recv() else {
+                let mut inputs = vec![*template; CHUNK_BLOCKS];
+                while let Some(outputs) = free.take(true) {
+                    let Ok(lit) = light_next(&mut inputs, outputs) else {
                         return;
                     };
-                    let first = chunk * CHUNK_BLOCKS;
-                    let len = CHUNK_BLOCKS.min(blocks - first);
-                    for (k, input) in inputs[..len].iter_mut().enumerate() {
-                        fill(first + k, input);
-                    }
-                    outputs.truncate(len);
-                    process_blocks(derived, &inputs[..len], &mut outputs);
-                    if lit_tx.send(outputs).is_err() {
+                    if lit_tx.send(lit).is_err() {
                         return;
                     }
                 }
             });
-            lanes.push((lit_rx, free_tx));
         }
+        drop(lit_tx);
+        let mut inputs = vec![*template; CHUNK_BLOCKS];
+        // Lit chunks that arrived before their turn.
+        let mut waiting: BTreeMap<usize, Chunk> = BTreeMap::new();
         for chunk in 0..chunks {
-            let (lit, free) = &lanes[chunk % helpers];
-            let mut outputs = lit.recv().expect("a helper lights every chunk it is given");
+            let outputs = loop {
+                if let Some(outputs) = waiting.remove(&chunk) {
+                    break outputs;
+                }
+                if let Ok((k, outputs)) = lit_rx.try_recv() {
+                    waiting.insert(k, outputs);
+                    continue;
+                }
+                // Nothing ready: light the next unclaimed chunk here, if a buffer is free.
+                if let Some(outputs) = free.take(false) {
+                    match light_next(&mut inputs, outputs) {
+                        Ok((k, outputs)) => {
+                            waiting.insert(k, outputs);
+                            continue;
+                        }
+                        Err(outputs) => free.put(outputs),
+                    }
+                }
+                // A helper has this chunk: wait for it.
+                let (k, outputs) = lit_rx.recv().expect("a helper lights each chunk it claims");
+                waiting.insert(k, outputs);
+            };
+            let mut outputs = outputs;
             outputs.iter().for_each(&mut stream);
             outputs.resize(CHUNK_BLOCKS, OutputBlock::default());
-            // The helper may have finished its last chunk and gone.
-            let _ = free.send(outputs);
+            free.put(outputs);
         }
     });
 }
