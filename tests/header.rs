@@ -1,5 +1,7 @@
-//! The checked-in C header equals what build.rs generates now, and it compiles under the
-//! strictest flags alone and together with the system <GL/gl.h>, in either order.
+//! The checked-in C header and table-made entry points (src/capi/generated.rs) equal what
+//! build.rs generates now, and the header compiles under the strictest flags alone and
+//! together with the system <GL/gl.h>, in either order, and with <GL/glext.h>'s prototypes
+//! (so every declaration matches the system headers' types).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -16,6 +18,18 @@ fn checked_in_header_matches_the_generated_one() {
     assert!(
         generated == checked_in,
         "include/fflight.h is stale: run `make header` (FFLIGHT_BLESS=1 cargo build) and commit it"
+    );
+}
+
+#[test]
+fn checked_in_entry_points_match_the_table() {
+    let generated = include_str!(concat!(env!("OUT_DIR"), "/generated.rs"));
+    let checked_in = std::fs::read_to_string(manifest_dir().join("src/capi/generated.rs"))
+        .expect("src/capi/generated.rs exists");
+    assert!(
+        generated == checked_in,
+        "src/capi/generated.rs is stale: run `make header` (FFLIGHT_BLESS=1 cargo build) and \
+         commit it"
     );
 }
 
@@ -63,6 +77,20 @@ fn header_compiles_after_the_system_gl_header() {
     compile(
         "gl_first.c",
         &format!("#include <GL/gl.h>\n#include \"fflight.h\"\n{BODY}"),
+        &[],
+    );
+}
+
+/// <GL/glext.h> declares the GL 1.4 and 1.5 functions only with GL_GLEXT_PROTOTYPES: a
+/// declaration of fflight.h whose types differ from the system header's is then an error.
+#[test]
+fn header_compiles_after_the_system_gl_and_glext_prototypes() {
+    compile(
+        "glext_first.c",
+        &format!(
+            "#define GL_GLEXT_PROTOTYPES 1\n#include <GL/gl.h>\n#include <GL/glext.h>\n\
+             #include \"fflight.h\"\n{BODY}"
+        ),
         &[],
     );
 }

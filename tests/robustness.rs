@@ -23,6 +23,8 @@
 //! before it), so a failure reproduces with `sequence(seed)`.
 
 mod common;
+#[path = "common/state_lists.rs"]
+mod state_lists;
 
 use std::ffi::c_void;
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -37,6 +39,7 @@ use fflight::pipeline::vertex::ProcessedVertex;
 use fflight::state::arrays::ArrayKind;
 use fflight::{Context, GlError, GlResult};
 use glam::{Vec3, Vec4};
+use state_lists::*;
 
 // ---- a small deterministic generator ----
 
@@ -368,7 +371,8 @@ const CAPS: [GLenum; 56] = [
 ];
 /// How many of `CAPS` are capabilities.
 const VALID_CAPS: usize = 53;
-/// Every glGet pname fflight answers, besides the capabilities.
+/// The glGet pnames of vertex processing and the older rasterization state; `get_pnames`
+/// adds those of tests/common/state_lists.rs.
 const GET_PNAMES: [GLenum; 75] = [
     GL_MAX_LIGHTS,
     GL_MAX_CLIP_PLANES,
@@ -446,7 +450,58 @@ const GET_PNAMES: [GLenum; 75] = [
     GL_TEXTURE_COORD_ARRAY_STRIDE,
     GL_EDGE_FLAG_ARRAY_STRIDE,
 ];
+/// Every glGet pname fflight answers, besides the capabilities.
+fn get_pnames() -> Vec<GLenum> {
+    GET_PNAMES.iter().copied().chain(state_pnames()).collect()
+}
 const MATRIX_MODES: [GLenum; 3] = [GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE];
+const COMPARISON_FUNCS: [GLenum; 8] = [
+    GL_NEVER,
+    GL_LESS,
+    GL_EQUAL,
+    GL_LEQUAL,
+    GL_GREATER,
+    GL_NOTEQUAL,
+    GL_GEQUAL,
+    GL_ALWAYS,
+];
+const STENCIL_OPS: [GLenum; 8] = [
+    GL_KEEP,
+    GL_ZERO,
+    GL_REPLACE,
+    GL_INCR,
+    GL_DECR,
+    GL_INVERT,
+    GL_INCR_WRAP,
+    GL_DECR_WRAP,
+];
+const BLEND_FACTORS: [GLenum; 15] = [
+    GL_ZERO,
+    GL_ONE,
+    GL_SRC_COLOR,
+    GL_ONE_MINUS_SRC_COLOR,
+    GL_DST_COLOR,
+    GL_ONE_MINUS_DST_COLOR,
+    GL_SRC_ALPHA,
+    GL_ONE_MINUS_SRC_ALPHA,
+    GL_DST_ALPHA,
+    GL_ONE_MINUS_DST_ALPHA,
+    GL_CONSTANT_COLOR,
+    GL_ONE_MINUS_CONSTANT_COLOR,
+    GL_CONSTANT_ALPHA,
+    GL_ONE_MINUS_CONSTANT_ALPHA,
+    GL_SRC_ALPHA_SATURATE,
+];
+const BLEND_EQUATIONS: [GLenum; 5] = [
+    GL_FUNC_ADD,
+    GL_FUNC_SUBTRACT,
+    GL_FUNC_REVERSE_SUBTRACT,
+    GL_MIN,
+    GL_MAX,
+];
+/// What glDrawBuffer and glReadBuffer accept without an error here (glReadBuffer takes no
+/// GL_NONE or GL_FRONT_AND_BACK; the others name buffers fflight's framebuffer lacks).
+const COLOR_BUFFERS: [GLenum; 5] = [GL_FRONT, GL_LEFT, GL_FRONT_LEFT, GL_NONE, GL_FRONT_AND_BACK];
 const PRIMITIVES: [GLenum; 10] = [
     GL_POINTS,
     GL_LINES,
@@ -928,7 +983,7 @@ impl Op {
                     || colors.as_ref().is_some_and(|v| v.len() < n)
                     || out < n
             }
-            Op::Get(pname) => !valid(pname, &GET_PNAMES) && !valid(pname, &CAPS[..VALID_CAPS]),
+            Op::Get(pname) => !valid(pname, &get_pnames()) && !valid(pname, &CAPS[..VALID_CAPS]),
             Op::GetLight { light, pname, .. } => {
                 !valid(light, &LIGHTS) || !valid(pname, &LIGHT_PNAMES)
             }
@@ -1175,7 +1230,8 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
         70 => Op::CaptureBegin,
         71 => Op::CaptureEnd,
         72 => {
-            let pnames: &[GLenum] = if rng.coin() { &GET_PNAMES } else { &CAPS };
+            let get_pnames = get_pnames();
+            let pnames: &[GLenum] = if rng.coin() { &get_pnames } else { &CAPS };
             Op::Get(rng.enumeration(pnames))
         }
         73 => Op::GetLight {
@@ -1779,6 +1835,8 @@ enum Key {
     Selection,
     NameStack,
     MatrixStack(GLenum, usize),
+    PolygonStipple,
+    PixelMap(GLenum),
 }
 
 /// Everything the public queries report about a context, as bits (NaN equals itself, 0 and
@@ -1823,7 +1881,7 @@ impl Snapshot {
         if c.inside_begin_end() {
             c.end().expect("glEnd ends the primitive in progress");
         }
-        for &pname in CAPS[..VALID_CAPS].iter().chain(&GET_PNAMES) {
+        for &pname in CAPS[..VALID_CAPS].iter().chain(&get_pnames()) {
             let values = s.start(Key::Get(pname));
             match c.get(pname) {
                 Ok(StateValue::Bools(v)) => values.extend(v.iter().map(|&b| 0x100 | b as u64)),
@@ -1853,6 +1911,17 @@ impl Snapshot {
         for pname in POINTER_PNAMES {
             let address = c.get_pointer(pname).expect("a pointer");
             s.push(Key::Pointer(pname), [address as u64]);
+        }
+        // The stipple packed with the current modes into a buffer that starts as 0xAA.
+        let mut stipple = vec![0xAA_u8; c.polygon_stipple_pack_span()];
+        c.get_polygon_stipple(&mut stipple).expect("the stipple");
+        s.push(Key::PolygonStipple, stipple.iter().map(|&b| b as u64));
+        for map in PIXEL_MAPS {
+            let values = c.get_pixel_map(map).expect("a pixel map");
+            s.push(
+                Key::PixelMap(map),
+                values.iter().map(|v| v.to_bits() as u64),
+            );
         }
         // Capture only grows (or restarts): its counts and last entries show any change.
         let capture = c.captured();
@@ -2320,6 +2389,34 @@ unsafe extern "C" {
     fn glCullFace(mode: GLenum);
     fn glPolygonMode(face: GLenum, mode: GLenum);
     fn glHint(target: GLenum, mode: GLenum);
+    fn glFogfv(pname: GLenum, params: *const GLfloat);
+    fn glFogiv(pname: GLenum, params: *const GLint);
+    safe fn glFogf(pname: GLenum, param: GLfloat);
+    fn glPointParameterfv(pname: GLenum, params: *const GLfloat);
+    fn glPointParameteriv(pname: GLenum, params: *const GLint);
+    safe fn glPointParameterf(pname: GLenum, param: GLfloat);
+    fn glPolygonStipple(mask: *const GLubyte);
+    fn glGetPolygonStipple(mask: *mut GLubyte);
+    fn glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat);
+    fn glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint);
+    fn glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort);
+    fn glGetPixelMapfv(map: GLenum, values: *mut GLfloat);
+    fn glGetPixelMapuiv(map: GLenum, values: *mut GLuint);
+    fn glGetPixelMapusv(map: GLenum, values: *mut GLushort);
+    safe fn glScissor(x: GLint, y: GLint, width: GLsizei, height: GLsizei);
+    safe fn glPointSize(size: GLfloat);
+    safe fn glLineWidth(width: GLfloat);
+    safe fn glPixelStorei(pname: GLenum, param: GLint);
+    safe fn glPixelTransferf(pname: GLenum, param: GLfloat);
+    safe fn glDepthFunc(func: GLenum);
+    safe fn glStencilFunc(func: GLenum, reference: GLint, mask: GLuint);
+    safe fn glAlphaFunc(func: GLenum, reference: GLclampf);
+    safe fn glStencilOp(fail: GLenum, zfail: GLenum, zpass: GLenum);
+    safe fn glBlendFunc(sfactor: GLenum, dfactor: GLenum);
+    safe fn glBlendEquation(mode: GLenum);
+    safe fn glLogicOp(opcode: GLenum);
+    safe fn glDrawBuffer(mode: GLenum);
+    safe fn glReadBuffer(mode: GLenum);
     fn glRectfv(v1: *const GLfloat, v2: *const GLfloat);
     fn glRectdv(v1: *const GLdouble, v2: *const GLdouble);
     fn glVertex2fv(v: *const GLfloat);
@@ -2392,13 +2489,15 @@ unsafe fn bad_call(rng: &mut Rng) -> String {
     let face = rng.enumeration(&FACES);
     let material_pname = rng.enumeration(&MATERIAL_PNAMES);
     let model_pname = rng.enumeration(&LIGHT_MODEL_PNAMES);
-    let pname = rng.enumeration(&GET_PNAMES);
+    let pname = rng.enumeration(&get_pnames());
     let plane = rng.enumeration(&CLIP_PLANES);
     let mode = rng.enumeration(&PRIMITIVES);
     let count = 1 + rng.below(8) as i32;
     let floats = [0.5f32; 4];
     let doubles = [0.5f64; 4];
-    let call = rng.below(54);
+    let call = rng.below(64);
+    let pixel_map = rng.enumeration(&PIXEL_MAPS);
+    let mut out = [0.0f32; 4];
     // SAFETY: NULL pointers, or pointers to local arrays of 4 values, enough for every call.
     unsafe {
         match call {
@@ -2538,6 +2637,71 @@ unsafe fn bad_call(rng: &mut Rng) -> String {
                 };
                 glSelectBuffer(rng.pick(&[-1, -4, i32::MIN]), buffer);
             }
+            // The state that does not change vertex processing: NULL pointers...
+            54 => match rng.coin() {
+                true => glFogfv(rng.enumeration(&FOG_PNAMES), null()),
+                false => glFogiv(rng.enumeration(&FOG_PNAMES), null()),
+            },
+            55 => match rng.coin() {
+                true => glPointParameterfv(rng.enumeration(&POINT_PNAMES), null()),
+                false => glPointParameteriv(rng.enumeration(&POINT_PNAMES), null()),
+            },
+            56 => match rng.coin() {
+                true => glPolygonStipple(null()),
+                false => glGetPolygonStipple(null_mut()),
+            },
+            57 => match rng.below(3) {
+                0 => glPixelMapfv(pixel_map, 1 << rng.below(4), null()),
+                1 => glPixelMapuiv(pixel_map, 1 << rng.below(4), null()),
+                _ => glPixelMapusv(pixel_map, 1 << rng.below(4), null()),
+            },
+            58 => match rng.below(3) {
+                0 => glGetPixelMapfv(pixel_map, null_mut()),
+                1 => glGetPixelMapuiv(pixel_map, null_mut()),
+                _ => glGetPixelMapusv(pixel_map, null_mut()),
+            },
+            // ... negative sizes and bad values ...
+            59 => match rng.below(3) {
+                0 => glPixelMapfv(
+                    pixel_map,
+                    rng.pick(&[0, -1, 257, i32::MIN]),
+                    floats.as_ptr(),
+                ),
+                1 => glScissor(0, 0, rng.pick(&[-1, i32::MIN]), count),
+                _ => glScissor(0, 0, count, rng.pick(&[-1, i32::MIN])),
+            },
+            60 => match rng.below(4) {
+                0 => glPointSize(rng.pick(&[0.0, -1.0, f32::NAN])),
+                1 => glLineWidth(rng.pick(&[0.0, -1.0, f32::NAN])),
+                2 => glPixelStorei(
+                    rng.pick(&[GL_PACK_ALIGNMENT, GL_UNPACK_ALIGNMENT]),
+                    rng.pick(&[0, 3, 16, -4]),
+                ),
+                _ => glFogf(GL_FOG_DENSITY, rng.pick(&[-1.0, f32::NAN])),
+            },
+            // ... and wrong enums.
+            61 => match rng.below(7) {
+                0 => glDepthFunc(rng.invalid_enum(&COMPARISON_FUNCS)),
+                1 => glStencilFunc(rng.invalid_enum(&COMPARISON_FUNCS), 1, 1),
+                2 => glAlphaFunc(rng.invalid_enum(&COMPARISON_FUNCS), 0.5),
+                3 => glStencilOp(GL_KEEP, rng.invalid_enum(&STENCIL_OPS), GL_KEEP),
+                4 => glBlendFunc(rng.invalid_enum(&BLEND_FACTORS), GL_ZERO),
+                5 => glBlendEquation(rng.invalid_enum(&BLEND_EQUATIONS)),
+                _ => glLogicOp(rng.invalid_enum(&(GL_CLEAR..=GL_SET).collect::<Vec<_>>())),
+            },
+            62 => match rng.below(6) {
+                0 => glPixelStorei(rng.invalid_enum(&PIXEL_STORE_PNAMES), 1),
+                1 => glPixelTransferf(rng.invalid_enum(&PIXEL_TRANSFER_PNAMES), 1.0),
+                2 => glFogf(rng.invalid_enum(&FOG_PNAMES), 1.0),
+                3 => glPointParameterf(rng.invalid_enum(&POINT_PNAMES), 1.0),
+                4 => glDrawBuffer(rng.invalid_enum(&COLOR_BUFFERS)),
+                _ => glReadBuffer(rng.invalid_enum(&COLOR_BUFFERS[..3])),
+            },
+            63 => match rng.below(3) {
+                0 => glHint(rng.invalid_enum(&HINT_TARGETS), GL_NICEST),
+                1 => glPixelMapfv(rng.invalid_enum(&PIXEL_MAPS), 2, floats.as_ptr()),
+                _ => glGetPixelMapfv(rng.invalid_enum(&PIXEL_MAPS), out.as_mut_ptr()),
+            },
             _ => glVertexPointer(4, rng.invalid_enum(&COMPONENT_TYPES[2..]), 0, null()),
         }
     }

@@ -1,4 +1,4 @@
-//! glClipPlane, glGetClipPlane, glShadeModel, glFrontFace, glCullFace, glPolygonMode.
+//! glClipPlane, glGetClipPlane, glShadeModel, glFrontFace, glCullFace, glPolygonMode, glRect.
 
 use super::{read, with_context, write};
 use crate::error::GlError;
@@ -45,37 +45,6 @@ pub extern "C" fn glCullFace(mode: GLenum) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
     with_context(|ctx| ctx.polygon_mode(face, mode))
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glPointSize(size: GLfloat) {
-    with_context(|ctx| ctx.point_size(size))
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glLineWidth(width: GLfloat) {
-    with_context(|ctx| ctx.line_width(width))
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glHint(target: GLenum, mode: GLenum) {
-    with_context(|ctx| ctx.hint(target, mode))
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) {
-    with_context(|ctx| ctx.clear_color(glam::Vec4::new(red, green, blue, alpha)))
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glClearDepth(depth: GLclampd) {
-    with_context(|ctx| ctx.clear_depth(depth))
-}
-
-/// There is no framebuffer: the mask is checked and nothing else happens.
-#[unsafe(no_mangle)]
-pub extern "C" fn glClear(mask: GLbitfield) {
-    with_context(|ctx| ctx.clear(mask))
 }
 
 #[unsafe(no_mangle)]

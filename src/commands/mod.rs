@@ -3,10 +3,13 @@
 pub mod arrays;
 pub mod capture;
 pub mod feedback;
+pub mod fragment;
 pub mod lighting;
 pub mod matrix;
+pub mod pixel;
 pub mod query;
 pub mod raster;
 pub mod raster_pos;
+pub mod rasterization;
 pub mod select;
 pub mod vertex;

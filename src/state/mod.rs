@@ -3,8 +3,13 @@
 pub mod arrays;
 pub mod convert;
 pub mod enables;
+pub mod fog;
+pub mod fragment;
+pub mod hints;
 pub mod light;
 pub mod light_model;
 pub mod material;
 pub mod matrix;
+pub mod pixel;
 pub mod raster;
+pub mod rasterization;

@@ -1,0 +1,134 @@
+//! The pnames and arguments of the state that does not change vertex processing (points,
+//! lines, polygons, fog, hints, per-fragment operations, framebuffer control, pixels), shared
+//! by tests/fragment_state.rs and tests/robustness.rs.
+#![allow(dead_code)]
+
+use fflight::gl::*;
+
+pub const PIXEL_MAPS: [GLenum; 10] = [
+    GL_PIXEL_MAP_I_TO_I,
+    GL_PIXEL_MAP_S_TO_S,
+    GL_PIXEL_MAP_I_TO_R,
+    GL_PIXEL_MAP_I_TO_G,
+    GL_PIXEL_MAP_I_TO_B,
+    GL_PIXEL_MAP_I_TO_A,
+    GL_PIXEL_MAP_R_TO_R,
+    GL_PIXEL_MAP_G_TO_G,
+    GL_PIXEL_MAP_B_TO_B,
+    GL_PIXEL_MAP_A_TO_A,
+];
+pub const FOG_PNAMES: [GLenum; 7] = [
+    GL_FOG_COLOR,
+    GL_FOG_INDEX,
+    GL_FOG_DENSITY,
+    GL_FOG_START,
+    GL_FOG_END,
+    GL_FOG_MODE,
+    GL_FOG_COORD_SRC,
+];
+pub const POINT_PNAMES: [GLenum; 4] = [
+    GL_POINT_SIZE_MIN,
+    GL_POINT_SIZE_MAX,
+    GL_POINT_FADE_THRESHOLD_SIZE,
+    GL_POINT_DISTANCE_ATTENUATION,
+];
+pub const PIXEL_STORE_PNAMES: [GLenum; 16] = [
+    GL_UNPACK_SWAP_BYTES,
+    GL_UNPACK_LSB_FIRST,
+    GL_UNPACK_ROW_LENGTH,
+    GL_UNPACK_IMAGE_HEIGHT,
+    GL_UNPACK_SKIP_ROWS,
+    GL_UNPACK_SKIP_PIXELS,
+    GL_UNPACK_SKIP_IMAGES,
+    GL_UNPACK_ALIGNMENT,
+    GL_PACK_SWAP_BYTES,
+    GL_PACK_LSB_FIRST,
+    GL_PACK_ROW_LENGTH,
+    GL_PACK_IMAGE_HEIGHT,
+    GL_PACK_SKIP_ROWS,
+    GL_PACK_SKIP_PIXELS,
+    GL_PACK_SKIP_IMAGES,
+    GL_PACK_ALIGNMENT,
+];
+pub const PIXEL_TRANSFER_PNAMES: [GLenum; 14] = [
+    GL_MAP_COLOR,
+    GL_MAP_STENCIL,
+    GL_INDEX_SHIFT,
+    GL_INDEX_OFFSET,
+    GL_RED_SCALE,
+    GL_RED_BIAS,
+    GL_GREEN_SCALE,
+    GL_GREEN_BIAS,
+    GL_BLUE_SCALE,
+    GL_BLUE_BIAS,
+    GL_ALPHA_SCALE,
+    GL_ALPHA_BIAS,
+    GL_DEPTH_SCALE,
+    GL_DEPTH_BIAS,
+];
+/// The other glGet pnames of this state.
+pub const OTHER_STATE_PNAMES: [GLenum; 51] = [
+    GL_LINE_STIPPLE_PATTERN,
+    GL_LINE_STIPPLE_REPEAT,
+    GL_POLYGON_OFFSET_FACTOR,
+    GL_POLYGON_OFFSET_UNITS,
+    GL_GENERATE_MIPMAP_HINT,
+    GL_TEXTURE_COMPRESSION_HINT,
+    GL_SCISSOR_BOX,
+    GL_ALPHA_TEST_FUNC,
+    GL_ALPHA_TEST_REF,
+    GL_STENCIL_FUNC,
+    GL_STENCIL_VALUE_MASK,
+    GL_STENCIL_REF,
+    GL_STENCIL_FAIL,
+    GL_STENCIL_PASS_DEPTH_FAIL,
+    GL_STENCIL_PASS_DEPTH_PASS,
+    GL_STENCIL_WRITEMASK,
+    GL_STENCIL_CLEAR_VALUE,
+    GL_STENCIL_BITS,
+    GL_DEPTH_FUNC,
+    GL_DEPTH_WRITEMASK,
+    GL_BLEND_SRC,
+    GL_BLEND_DST,
+    GL_BLEND_SRC_RGB,
+    GL_BLEND_DST_RGB,
+    GL_BLEND_SRC_ALPHA,
+    GL_BLEND_DST_ALPHA,
+    GL_BLEND_EQUATION,
+    GL_BLEND_COLOR,
+    GL_LOGIC_OP_MODE,
+    GL_DRAW_BUFFER,
+    GL_READ_BUFFER,
+    GL_INDEX_WRITEMASK,
+    GL_COLOR_WRITEMASK,
+    GL_INDEX_CLEAR_VALUE,
+    GL_ACCUM_CLEAR_VALUE,
+    GL_AUX_BUFFERS,
+    GL_DOUBLEBUFFER,
+    GL_STEREO,
+    GL_ZOOM_X,
+    GL_ZOOM_Y,
+    GL_PIXEL_MAP_I_TO_I_SIZE,
+    GL_PIXEL_MAP_S_TO_S_SIZE,
+    GL_PIXEL_MAP_I_TO_R_SIZE,
+    GL_PIXEL_MAP_I_TO_G_SIZE,
+    GL_PIXEL_MAP_I_TO_B_SIZE,
+    GL_PIXEL_MAP_I_TO_A_SIZE,
+    GL_PIXEL_MAP_R_TO_R_SIZE,
+    GL_PIXEL_MAP_G_TO_G_SIZE,
+    GL_PIXEL_MAP_B_TO_B_SIZE,
+    GL_PIXEL_MAP_A_TO_A_SIZE,
+    GL_MAX_PIXEL_MAP_TABLE,
+];
+
+/// Every glGet pname this state adds (besides its capabilities).
+pub fn state_pnames() -> Vec<GLenum> {
+    [
+        &OTHER_STATE_PNAMES[..],
+        &FOG_PNAMES,
+        &POINT_PNAMES,
+        &PIXEL_STORE_PNAMES,
+        &PIXEL_TRANSFER_PNAMES,
+    ]
+    .concat()
+}
