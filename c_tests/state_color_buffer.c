@@ -43,6 +43,7 @@ int main(void)
 
     ffl_print_bools("doublebuffer", GL_DOUBLEBUFFER, 1, 0);
     ffl_print_bools("stereo", GL_STEREO, 1, 0);
+    ffl_print_bools("multisample", GL_MULTISAMPLE, 1, 1);
     print_color_buffer("initial");
     ffl_print_error("initial_queries");
 

@@ -2,6 +2,7 @@
 /*
  * The point, line, polygon and polygon-stipple attribute groups (§3.3-3.5; table 6.13):
  * glPointSize, glPointParameter*, glLineWidth, glLineStipple, glPolygonOffset,
+ * glSampleCoverage and the multisample enables (§3.2.1, §4.1.3),
  * glPolygonStipple and glGetPolygonStipple (through the pixel store modes, §3.6.4,
  * §4.3.2), their enables; the errors (after which the state must be unchanged) and
  * GL_INVALID_OPERATION between glBegin and glEnd.
@@ -30,6 +31,12 @@ static void print_raster(const char *what)
     ffl_print_bools(" offset_fill", GL_POLYGON_OFFSET_FILL, 1, 1);
     ffl_print_bools(" polygon_smooth", GL_POLYGON_SMOOTH, 1, 1);
     ffl_print_bools(" polygon_stipple", GL_POLYGON_STIPPLE, 1, 1);
+    ffl_print_bools(" multisample", GL_MULTISAMPLE, 1, 1);
+    ffl_print_bools(" sample_alpha_to_coverage", GL_SAMPLE_ALPHA_TO_COVERAGE, 1, 1);
+    ffl_print_bools(" sample_alpha_to_one", GL_SAMPLE_ALPHA_TO_ONE, 1, 1);
+    ffl_print_bools(" sample_coverage", GL_SAMPLE_COVERAGE, 1, 1);
+    ffl_print_floats(" sample_coverage_value", GL_SAMPLE_COVERAGE_VALUE, 1);
+    ffl_print_bools(" sample_coverage_invert", GL_SAMPLE_COVERAGE_INVERT, 1, 0);
 }
 
 /* Prints the stipple as glGetPolygonStipple packs it into `n` bytes that start as 0xAA. */
@@ -75,7 +82,13 @@ int main(void)
     glEnable(GL_POLYGON_OFFSET_FILL);
     glEnable(GL_POLYGON_SMOOTH);
     glEnable(GL_POLYGON_STIPPLE);
+    glDisable(GL_MULTISAMPLE);
+    glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glEnable(GL_SAMPLE_COVERAGE);
+    glSampleCoverage(0.25f, GL_TRUE);
     print_raster("set");
+    glSampleCoverage(1.5f, GL_FALSE);
+    ffl_print_floats("sample_coverage_value_clamped", GL_SAMPLE_COVERAGE_VALUE, 1);
     glPointParameteriv(GL_POINT_DISTANCE_ATTENUATION, iattenuation);
     ffl_print_floats("point_attenuation_integers", GL_POINT_DISTANCE_ATTENUATION, 3);
     glLineStipple(1000, 0x1234);
@@ -140,6 +153,10 @@ int main(void)
     glPolygonStipple(pattern);
     glEnd();
     ffl_print_error("polygon_stipple_inside_begin_end");
+    glBegin(GL_POINTS);
+    glSampleCoverage(0.5f, GL_TRUE);
+    glEnd();
+    ffl_print_error("sample_coverage_inside_begin_end");
     print_raster("after_errors");
     print_stipple("stipple_after_errors", 128);
     ffl_print_error("end");

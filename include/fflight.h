@@ -1682,6 +1682,34 @@ typedef struct FflCapturedPrimitive {
 #define GL_TEXTURE_COMPRESSION_HINT 34031
 #endif
 
+#ifndef GL_SAMPLE_ALPHA_TO_COVERAGE
+#define GL_SAMPLE_ALPHA_TO_COVERAGE 32926
+#endif
+
+#ifndef GL_SAMPLE_ALPHA_TO_ONE
+#define GL_SAMPLE_ALPHA_TO_ONE 32927
+#endif
+
+#ifndef GL_SAMPLE_COVERAGE
+#define GL_SAMPLE_COVERAGE 32928
+#endif
+
+#ifndef GL_SAMPLE_BUFFERS
+#define GL_SAMPLE_BUFFERS 32936
+#endif
+
+#ifndef GL_SAMPLES
+#define GL_SAMPLES 32937
+#endif
+
+#ifndef GL_SAMPLE_COVERAGE_VALUE
+#define GL_SAMPLE_COVERAGE_VALUE 32938
+#endif
+
+#ifndef GL_SAMPLE_COVERAGE_INVERT
+#define GL_SAMPLE_COVERAGE_INVERT 32939
+#endif
+
 
 
 /*
@@ -2362,6 +2390,8 @@ void glLineStipple(GLint factor, GLushort pattern);
 
 void glPolygonOffset(GLfloat factor, GLfloat units);
 
+void glSampleCoverage(GLclampf value, GLboolean invert);
+
 /*
  The 32 x 32 bitmap is unpacked with the GL_UNPACK_* modes of glPixelStore.
 
@@ -2378,6 +2408,34 @@ void glPolygonStipple(const GLubyte *mask);
  `mask` is NULL or has room for the values the command writes.
  */
 void glGetPolygonStipple(GLubyte *mask);
+
+/*
+ # Safety
+ `v1` is NULL or points to the values the command reads.
+ `v2` is NULL or points to the values the command reads.
+ */
+void glRectsv(const GLshort *v1, const GLshort *v2);
+
+/*
+ # Safety
+ `v1` is NULL or points to the values the command reads.
+ `v2` is NULL or points to the values the command reads.
+ */
+void glRectiv(const GLint *v1, const GLint *v2);
+
+/*
+ # Safety
+ `v1` is NULL or points to the values the command reads.
+ `v2` is NULL or points to the values the command reads.
+ */
+void glRectfv(const GLfloat *v1, const GLfloat *v2);
+
+/*
+ # Safety
+ `v1` is NULL or points to the values the command reads.
+ `v2` is NULL or points to the values the command reads.
+ */
+void glRectdv(const GLdouble *v1, const GLdouble *v2);
 
 void glFogf(GLenum pname, GLfloat param);
 
@@ -2717,18 +2775,6 @@ void glRectd(GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2);
 void glRecti(GLint x1, GLint y1, GLint x2, GLint y2);
 
 void glRects(GLshort x1, GLshort y1, GLshort x2, GLshort y2);
-
-/*
- # Safety
- `v1` and `v2` are NULL or point to 2 values each.
- */
-void glRectfv(const GLfloat *v1, const GLfloat *v2);
-
-/*
- # Safety
- `v1` and `v2` are NULL or point to 2 values each.
- */
-void glRectdv(const GLdouble *v1, const GLdouble *v2);
 
 void glRasterPos2s(GLshort x, GLshort y);
 

@@ -25,7 +25,7 @@ use crate::state::matrix::Matrices;
 use crate::state::pixel::{PixelMaps, PixelModeAttribs, PixelStoreAttribs};
 use crate::state::raster::RasterState;
 use crate::state::rasterization::{
-    LineAttribs, PointAttribs, PolygonAttribs, PolygonStippleAttribs,
+    LineAttribs, MultisampleAttribs, PointAttribs, PolygonAttribs, PolygonStippleAttribs,
 };
 
 /// glRenderMode's modes.
@@ -64,6 +64,7 @@ pub struct Context {
     pub(crate) line: LineAttribs,
     pub(crate) polygon: PolygonAttribs,
     pub(crate) polygon_stipple: PolygonStippleAttribs,
+    pub(crate) multisample: MultisampleAttribs,
     pub(crate) fog: FogAttribs,
     pub(crate) scissor: ScissorAttribs,
     pub(crate) depth: DepthBufferAttribs,
@@ -112,6 +113,7 @@ impl Context {
             line: Default::default(),
             polygon: Default::default(),
             polygon_stipple: Default::default(),
+            multisample: Default::default(),
             fog: Default::default(),
             scissor: Default::default(),
             depth: Default::default(),

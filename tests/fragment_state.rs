@@ -15,8 +15,8 @@ mod state_lists;
 
 use state_lists::*;
 
-/// The capabilities kept in the attribute groups, and GL_MULTISAMPLE.
-const CAPABILITIES: [GLenum; 19] = [
+/// The capabilities kept in the attribute groups.
+const CAPABILITIES: [GLenum; 22] = [
     GL_POINT_SMOOTH,
     GL_LINE_SMOOTH,
     GL_LINE_STIPPLE,
@@ -36,6 +36,9 @@ const CAPABILITIES: [GLenum; 19] = [
     GL_INDEX_LOGIC_OP,
     GL_COLOR_LOGIC_OP,
     GL_MULTISAMPLE,
+    GL_SAMPLE_ALPHA_TO_COVERAGE,
+    GL_SAMPLE_ALPHA_TO_ONE,
+    GL_SAMPLE_COVERAGE,
 ];
 
 /// Every glGet pname of this state (the ones of tests/common/state_lists.rs and those it had
@@ -154,6 +157,10 @@ fn initial_values_are_the_state_tables() {
         (GL_BLEND, vec![0.0]),
         (GL_FOG, vec![0.0]),
         (GL_POLYGON_STIPPLE, vec![0.0]),
+        (GL_SAMPLE_COVERAGE, vec![0.0]),
+        (GL_SAMPLE_COVERAGE_VALUE, vec![1.0]),
+        (GL_SAMPLE_COVERAGE_INVERT, vec![0.0]),
+        (GL_SAMPLE_BUFFERS, vec![0.0]),
     ];
     for (pname, values) in expected {
         assert_eq!(&doubles(&ctx, *pname), values, "pname {pname:#x}");
@@ -223,6 +230,7 @@ fn values_set_read_back() {
     ctx.pixel_transfer(GL_GREEN_BIAS, 0.125).unwrap();
     ctx.pixel_transfer(GL_MAP_STENCIL, 1.0).unwrap();
     ctx.pixel_zoom(2.0, -0.5).unwrap();
+    ctx.sample_coverage(1.5, true).unwrap();
     for cap in [GL_DEPTH_TEST, GL_FOG, GL_POLYGON_OFFSET_LINE, GL_COLOR_SUM] {
         ctx.set_capability(cap, true).unwrap();
     }
@@ -278,6 +286,8 @@ fn values_set_read_back() {
         (GL_MAP_STENCIL, vec![1.0]),
         (GL_ZOOM_X, vec![2.0]),
         (GL_ZOOM_Y, vec![-0.5]),
+        (GL_SAMPLE_COVERAGE_VALUE, vec![1.0]),
+        (GL_SAMPLE_COVERAGE_INVERT, vec![1.0]),
         (GL_DEPTH_TEST, vec![1.0]),
         (GL_FOG, vec![1.0]),
         (GL_POLYGON_OFFSET_LINE, vec![1.0]),
@@ -717,6 +727,7 @@ const GOOD_CALLS: &[(&str, Command)] = &[
         c.pixel_map(GL_PIXEL_MAP_A_TO_A, 1, &[0.5])
     }),
     ("glPixelZoom", |c| c.pixel_zoom(3.0, 3.0)),
+    ("glSampleCoverage", |c| c.sample_coverage(0.5, true)),
     ("glEnable", |c| c.set_capability(GL_STENCIL_TEST, true)),
 ];
 
@@ -768,4 +779,36 @@ fn capabilities_read_back_through_get_and_is_enabled() {
             );
         }
     }
+}
+
+/// glRect{s,i,f,d}v (made from the entry-point table) draw what glRect draws; a missing corner
+/// (a NULL pointer) is GL_INVALID_VALUE and draws nothing.
+#[test]
+fn rect_from_vectors_is_rect() {
+    let captured = |draw: &dyn Fn(&mut Context) -> GlResult| {
+        let mut ctx = Context::new();
+        ctx.capture_begin().unwrap();
+        let result = draw(&mut ctx);
+        ctx.capture_end().unwrap();
+        let eye: Vec<Vec4> = ctx.captured().vertices().iter().map(|v| v.eye).collect();
+        (result, eye)
+    };
+    let (ok, expected) = captured(&|c| c.rect(-1.0, 2.0, 3.0, 5.0));
+    assert_eq!((ok, expected.len()), (Ok(()), 4));
+    assert_eq!(
+        captured(&|c| c.rect_v(&[-1i16, 2], &[3i16, 5])),
+        (Ok(()), expected.clone())
+    );
+    assert_eq!(
+        captured(&|c| c.rect_v(&[-1i32, 2], &[3i32, 5])),
+        (Ok(()), expected.clone())
+    );
+    assert_eq!(
+        captured(&|c| c.rect_v(&[-1.0f64, 2.0], &[3.0, 5.0])),
+        (Ok(()), expected)
+    );
+    assert_eq!(
+        captured(&|c| c.rect_v::<i32>(&[], &[3, 5])),
+        (Err(GlError::InvalidValue), vec![])
+    );
 }

@@ -310,7 +310,7 @@ const CLIENT_ARRAYS: [GLenum; 6] = [
 ];
 /// Every capability glEnable accepts: lighting, clip planes, culling, the rasterization
 /// capabilities fflight stores (values of <GL/gl.h>), and the client arrays.
-const CAPS: [GLenum; 56] = [
+const CAPS: [GLenum; 59] = [
     GL_LIGHTING,
     GL_LIGHT0,
     GL_LIGHT1,
@@ -358,6 +358,9 @@ const CAPS: [GLenum; 56] = [
     GL_TEXTURE_GEN_T,
     GL_TEXTURE_GEN_R,
     GL_TEXTURE_GEN_Q,
+    GL_SAMPLE_ALPHA_TO_COVERAGE,
+    GL_SAMPLE_ALPHA_TO_ONE,
+    GL_SAMPLE_COVERAGE,
     GL_VERTEX_ARRAY,
     GL_NORMAL_ARRAY,
     GL_COLOR_ARRAY,
@@ -370,7 +373,7 @@ const CAPS: [GLenum; 56] = [
     GL_MAX_LIGHTS,
 ];
 /// How many of `CAPS` are capabilities.
-const VALID_CAPS: usize = 53;
+const VALID_CAPS: usize = 56;
 /// The glGet pnames of vertex processing and the older rasterization state; `get_pnames`
 /// adds those of tests/common/state_lists.rs.
 const GET_PNAMES: [GLenum; 75] = [
@@ -2419,6 +2422,8 @@ unsafe extern "C" {
     safe fn glReadBuffer(mode: GLenum);
     fn glRectfv(v1: *const GLfloat, v2: *const GLfloat);
     fn glRectdv(v1: *const GLdouble, v2: *const GLdouble);
+    fn glRectiv(v1: *const GLint, v2: *const GLint);
+    fn glRectsv(v1: *const GLshort, v2: *const GLshort);
     fn glVertex2fv(v: *const GLfloat);
     fn glVertex4fv(v: *const GLfloat);
     fn glVertex2sv(v: *const GLshort);
@@ -2547,9 +2552,11 @@ unsafe fn bad_call(rng: &mut Rng) -> String {
             },
             30 => glVertex4iv(null()),
             31 => glEdgeFlagv(null()),
-            32 => match rng.coin() {
-                true => glRectfv(null(), floats.as_ptr()),
-                false => glRectdv(doubles.as_ptr(), null()),
+            32 => match rng.below(4) {
+                0 => glRectfv(null(), floats.as_ptr()),
+                1 => glRectdv(doubles.as_ptr(), null()),
+                2 => glRectiv(null(), null()),
+                _ => glRectsv([1i16, 2].as_ptr(), null()),
             },
             33 => glFeedbackBuffer(count, rng.enumeration(&FEEDBACK_TYPES), null_mut()),
             34 => glGetPointerv(rng.enumeration(&POINTER_PNAMES), null_mut()),

@@ -73,6 +73,13 @@ pub extern "C" fn glPolygonOffset(factor: GLfloat, units: GLfloat) {
     })
 }
 
+#[unsafe(no_mangle)]
+pub extern "C" fn glSampleCoverage(value: GLclampf, invert: GLboolean) {
+    with_context(|ctx| {
+        ctx.sample_coverage(value, invert != GL_FALSE)
+    })
+}
+
 /// The 32 x 32 bitmap is unpacked with the GL_UNPACK_* modes of glPixelStore.
 ///
 /// # Safety
@@ -97,6 +104,62 @@ pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut GLubyte) {
         // SAFETY: the caller's guarantee, forwarded.
         let mask = unsafe { read_mut(mask, ctx.polygon_stipple_pack_span()) };
         ctx.get_polygon_stipple(mask)
+    })
+}
+
+/// # Safety
+/// `v1` is NULL or points to the values the command reads.
+/// `v2` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glRectsv(v1: *const GLshort, v2: *const GLshort) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v1 = unsafe { read(v1, 2) };
+        // SAFETY: the caller's guarantee, forwarded.
+        let v2 = unsafe { read(v2, 2) };
+        ctx.rect_v(v1, v2)
+    })
+}
+
+/// # Safety
+/// `v1` is NULL or points to the values the command reads.
+/// `v2` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glRectiv(v1: *const GLint, v2: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v1 = unsafe { read(v1, 2) };
+        // SAFETY: the caller's guarantee, forwarded.
+        let v2 = unsafe { read(v2, 2) };
+        ctx.rect_v(v1, v2)
+    })
+}
+
+/// # Safety
+/// `v1` is NULL or points to the values the command reads.
+/// `v2` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glRectfv(v1: *const GLfloat, v2: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v1 = unsafe { read(v1, 2) };
+        // SAFETY: the caller's guarantee, forwarded.
+        let v2 = unsafe { read(v2, 2) };
+        ctx.rect_v(v1, v2)
+    })
+}
+
+/// # Safety
+/// `v1` is NULL or points to the values the command reads.
+/// `v2` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glRectdv(v1: *const GLdouble, v2: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v1 = unsafe { read(v1, 2) };
+        // SAFETY: the caller's guarantee, forwarded.
+        let v2 = unsafe { read(v2, 2) };
+        ctx.rect_v(v1, v2)
     })
 }
 

@@ -66,27 +66,3 @@ pub extern "C" fn glRecti(x1: GLint, y1: GLint, x2: GLint, y2: GLint) {
 pub extern "C" fn glRects(x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort) {
     with_context(|ctx| ctx.rect(x1.into(), y1.into(), x2.into(), y2.into()))
 }
-
-/// # Safety
-/// `v1` and `v2` are NULL or point to 2 values each.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn glRectfv(v1: *const GLfloat, v2: *const GLfloat) {
-    // SAFETY: forwarded from the caller.
-    let (v1, v2) = unsafe { (read(v1, 2), read(v2, 2)) };
-    with_context(|ctx| match (v1, v2) {
-        ([x1, y1], [x2, y2]) => ctx.rect(*x1, *y1, *x2, *y2),
-        _ => Err(GlError::InvalidValue),
-    })
-}
-
-/// # Safety
-/// `v1` and `v2` are NULL or point to 2 values each.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn glRectdv(v1: *const GLdouble, v2: *const GLdouble) {
-    // SAFETY: forwarded from the caller.
-    let (v1, v2) = unsafe { (read(v1, 2), read(v2, 2)) };
-    with_context(|ctx| match (v1, v2) {
-        ([x1, y1], [x2, y2]) => ctx.rect(*x1 as f32, *y1 as f32, *x2 as f32, *y2 as f32),
-        _ => Err(GlError::InvalidValue),
-    })
-}

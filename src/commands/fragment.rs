@@ -37,6 +37,12 @@ macro_rules! group_flag {
             GL_POLYGON_OFFSET_POINT => Some($($borrow)+ $ctx.polygon.offset_point),
             GL_POLYGON_OFFSET_LINE => Some($($borrow)+ $ctx.polygon.offset_line),
             GL_POLYGON_OFFSET_FILL => Some($($borrow)+ $ctx.polygon.offset_fill),
+            GL_MULTISAMPLE => Some($($borrow)+ $ctx.multisample.multisample),
+            GL_SAMPLE_ALPHA_TO_COVERAGE => {
+                Some($($borrow)+ $ctx.multisample.sample_alpha_to_coverage)
+            }
+            GL_SAMPLE_ALPHA_TO_ONE => Some($($borrow)+ $ctx.multisample.sample_alpha_to_one),
+            GL_SAMPLE_COVERAGE => Some($($borrow)+ $ctx.multisample.sample_coverage),
             _ => None,
         }
     };

@@ -79,6 +79,18 @@ impl Context {
         Ok(())
     }
 
+    /// glRect{s,i,f,d}v: two corners of two values each; fewer values (a NULL pointer) is
+    /// GL_INVALID_VALUE.
+    pub fn rect_v<T: Copy + Into<f64>>(&mut self, v1: &[T], v2: &[T]) -> GlResult {
+        match (v1, v2) {
+            ([x1, y1, ..], [x2, y2, ..]) => {
+                let [x1, y1, x2, y2] = [*x1, *y1, *x2, *y2].map(|v| v.into() as f32);
+                self.rect(x1, y1, x2, y2)
+            }
+            _ => Err(GlError::InvalidValue),
+        }
+    }
+
     /// glRect (§2.9): a GL_POLYGON of the four corners at z = 0, counterclockwise.
     pub fn rect(&mut self, x1: f32, y1: f32, x2: f32, y2: f32) -> GlResult {
         self.begin(GL_POLYGON)?;

@@ -123,6 +123,14 @@ impl Context {
         self.fog.set(pname, &[param])
     }
 
+    /// glSampleCoverage (§4.1.3): the value is clamped to [0, 1].
+    pub fn sample_coverage(&mut self, value: f32, invert: bool) -> GlResult {
+        self.outside_begin_end()?;
+        self.multisample.coverage_value = value.clamp(0.0, 1.0);
+        self.multisample.coverage_invert = invert;
+        Ok(())
+    }
+
     /// glHint (§5.6).
     pub fn hint(&mut self, target: GLenum, mode: GLenum) -> GlResult {
         self.outside_begin_end()?;
@@ -149,6 +157,9 @@ impl Context {
             GL_LINE_STIPPLE_REPEAT => int(self.line.stipple_repeat),
             GL_POLYGON_OFFSET_FACTOR => floats(&[self.polygon.offset_factor]),
             GL_POLYGON_OFFSET_UNITS => floats(&[self.polygon.offset_units]),
+            GL_SAMPLE_COVERAGE_VALUE => floats(&[self.multisample.coverage_value]),
+            GL_SAMPLE_COVERAGE_INVERT => StateValue::Bools(vec![self.multisample.coverage_invert]),
+            GL_SAMPLE_BUFFERS | GL_SAMPLES => int(0),
             GL_FOG_COLOR => normalized(&fog.color.to_array()),
             GL_FOG_INDEX => floats(&[fog.index]),
             GL_FOG_DENSITY => floats(&[fog.density]),

@@ -7,12 +7,10 @@ use crate::gl::*;
 pub const MAX_CLIP_PLANES: usize = 6;
 
 /// GL 1.5 capabilities fflight accepts and reports but whose state it does not implement yet
-/// (evaluators, multisampling, texturing): glEnable stores them so glIsEnabled answers. The
-/// rasterization and per-fragment capabilities live in their attribute groups (see
-/// `Context::group_flag`).
+/// (evaluators, texturing): glEnable stores them so glIsEnabled answers. The rasterization and
+/// per-fragment capabilities live in their attribute groups (see `Context::group_flag`).
 const OTHER_CAPABILITIES: &[GLenum] = &[
     GL_AUTO_NORMAL,
-    GL_MULTISAMPLE,
     GL_TEXTURE_1D,
     GL_TEXTURE_2D,
     GL_TEXTURE_3D,
@@ -31,8 +29,7 @@ pub struct Enables {
     pub rescale_normal: bool,
     pub cull_face: bool,
     pub clip_planes: [bool; MAX_CLIP_PLANES],
-    /// OTHER_CAPABILITIES that are enabled (GL_MULTISAMPLE starts enabled, see
-    /// `Enables::initial`).
+    /// OTHER_CAPABILITIES that are enabled (all start disabled).
     other: Vec<GLenum>,
 }
 
@@ -70,7 +67,7 @@ impl Capability {
 impl Enables {
     pub fn initial() -> Enables {
         Enables {
-            other: vec![GL_MULTISAMPLE], // enabled initially (table 6.14)
+            other: Vec::new(),
             ..Enables::default()
         }
     }

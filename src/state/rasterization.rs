@@ -110,6 +110,32 @@ pub struct PolygonAttribs {
     pub offset_units: f32,
 }
 
+/// The multisample attribute group (GL_MULTISAMPLE_BIT, §3.2.1, §4.1.3). fflight's framebuffer
+/// has no sample buffers (GL_SAMPLE_BUFFERS 0), so none of it has an effect there either.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MultisampleAttribs {
+    pub multisample: bool,
+    pub sample_alpha_to_coverage: bool,
+    pub sample_alpha_to_one: bool,
+    pub sample_coverage: bool,
+    /// Clamped to [0, 1].
+    pub coverage_value: f32,
+    pub coverage_invert: bool,
+}
+
+impl Default for MultisampleAttribs {
+    fn default() -> MultisampleAttribs {
+        MultisampleAttribs {
+            multisample: true,
+            sample_alpha_to_coverage: false,
+            sample_alpha_to_one: false,
+            sample_coverage: false,
+            coverage_value: 1.0,
+            coverage_invert: false,
+        }
+    }
+}
+
 /// The polygon stipple attribute group (GL_POLYGON_STIPPLE_BIT, §3.5.2): 32 rows of 32 bits,
 /// the first (leftmost) pixel of a row in the most significant bit.
 #[derive(Clone, Debug, PartialEq)]

@@ -67,7 +67,11 @@ pub const PIXEL_TRANSFER_PNAMES: [GLenum; 14] = [
     GL_DEPTH_BIAS,
 ];
 /// The other glGet pnames of this state.
-pub const OTHER_STATE_PNAMES: [GLenum; 51] = [
+pub const OTHER_STATE_PNAMES: [GLenum; 55] = [
+    GL_SAMPLE_COVERAGE_VALUE,
+    GL_SAMPLE_COVERAGE_INVERT,
+    GL_SAMPLE_BUFFERS,
+    GL_SAMPLES,
     GL_LINE_STIPPLE_PATTERN,
     GL_LINE_STIPPLE_REPEAT,
     GL_POLYGON_OFFSET_FACTOR,
