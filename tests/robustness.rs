@@ -5,8 +5,8 @@
 //! - Through `fflight::Context` directly, so a panic fails the test (the C layer would catch
 //!   it): a call whose arguments GL must reject returns `Err` (`Op::must_fail`, a conservative
 //!   oracle); after every call that returns `Err`, everything the queries report (every glGet
-//!   pname, every light and material parameter, clip planes, array pointers, the whole of each
-//!   matrix stack, capture and the feedback buffer, with the primitive in progress ended on a
+//!   pname, every light and material parameter, clip planes, array pointers, the polygon
+//!   stipple, the pixel maps, the whole of each matrix stack, capture and the feedback buffer, with the primitive in progress ended on a
 //!   copy, and in selection mode the name stack, shown by a hit made on a copy, and the hit
 //!   records) is what it was before; the error flag keeps the first error until read. Mode
 //!   and name-stack commands (§5.2, §5.3) must end exactly as GL says (GL_STACK_OVERFLOW at
@@ -16,8 +16,10 @@
 //!   colors stay in [0, 1] whatever the inputs (NaN and infinities included), and feedback
 //!   streams parse.
 //! - Through the C entry points: NULL pointers and wrong enums (glSelectBuffer with NULL or a
-//!   negative size, name-stack errors), inside and outside glBegin/glEnd, set an error and
-//!   change nothing; hit records written through glSelectBuffer's pointer are well formed.
+//!   negative size, name-stack errors; NULL for glFog*v, glPointParameter*v, glPolygonStipple,
+//!   glPixelMap* and glGetPixelMap*, negative sizes for glScissor and glPixelMap, wrong enums
+//!   for the per-fragment, fog, point and pixel commands), inside and outside glBegin/glEnd,
+//!   set an error and change nothing; hit records written through glSelectBuffer's pointer are well formed.
 //!
 //! Each sequence has a fixed seed (printed on failure with the call that failed and the calls
 //! before it), so a failure reproduces with `sequence(seed)`.
@@ -37,6 +39,7 @@ use fflight::current::with_current;
 use fflight::lighting::{FaceColors, LitVertex};
 use fflight::pipeline::vertex::ProcessedVertex;
 use fflight::state::arrays::ArrayKind;
+use fflight::state::pixel::StoreParam;
 use fflight::{Context, GlError, GlResult};
 use glam::{Vec3, Vec4};
 use state_lists::*;
@@ -536,12 +539,14 @@ const CLIP_PLANES: [GLenum; 6] = [
 const SHADE_MODELS: [GLenum; 2] = [GL_FLAT, GL_SMOOTH];
 const WINDINGS: [GLenum; 2] = [GL_CW, GL_CCW];
 const POLYGON_MODES: [GLenum; 3] = [GL_POINT, GL_LINE, GL_FILL];
-const HINT_TARGETS: [GLenum; 5] = [
+const HINT_TARGETS: [GLenum; 7] = [
     GL_PERSPECTIVE_CORRECTION_HINT,
     GL_POINT_SMOOTH_HINT,
     GL_LINE_SMOOTH_HINT,
     GL_POLYGON_SMOOTH_HINT,
     GL_FOG_HINT,
+    GL_GENERATE_MIPMAP_HINT,
+    GL_TEXTURE_COMPRESSION_HINT,
 ];
 const HINT_MODES: [GLenum; 3] = [GL_DONT_CARE, GL_FASTEST, GL_NICEST];
 const COMPONENT_TYPES: [GLenum; 8] = [
@@ -590,6 +595,165 @@ const ARRAY_KINDS: [ArrayKind; 5] = [
 ];
 
 // ---- the commands ----
+
+/// The commands of the state that does not change vertex processing (fragment, fog, point,
+/// pixel), with arguments valid or not.
+#[derive(Clone, Debug)]
+enum StateOp {
+    DepthFunc(GLenum),
+    StencilFunc(GLenum, i32, u32),
+    StencilOp([GLenum; 3]),
+    AlphaFunc(GLenum, f32),
+    BlendFuncSeparate([GLenum; 4]),
+    BlendEquation(GLenum),
+    LogicOp(GLenum),
+    Scissor([i32; 4]),
+    Fog(GLenum, Vec<f32>),
+    PointParameter(GLenum, Vec<f32>),
+    PixelStore(GLenum, i32),
+    PixelTransfer(GLenum, f32),
+    PixelMap(GLenum, i32, Vec<f32>),
+    PolygonStipple(Vec<u8>),
+    DrawBuffer(GLenum),
+    ReadBuffer(GLenum),
+}
+
+fn state_op(rng: &mut Rng, finite: bool) -> StateOp {
+    let logic_ops: Vec<GLenum> = (GL_CLEAR..=GL_SET).collect();
+    match rng.below(16) {
+        0 => StateOp::DepthFunc(rng.enumeration(&COMPARISON_FUNCS)),
+        1 => StateOp::StencilFunc(rng.enumeration(&COMPARISON_FUNCS), rng.int(), rng.any_u32()),
+        2 => StateOp::StencilOp(std::array::from_fn(|_| rng.enumeration(&STENCIL_OPS))),
+        3 => StateOp::AlphaFunc(rng.enumeration(&COMPARISON_FUNCS), rng.float(finite)),
+        4 => StateOp::BlendFuncSeparate(std::array::from_fn(|_| rng.enumeration(&BLEND_FACTORS))),
+        5 => StateOp::BlendEquation(rng.enumeration(&BLEND_EQUATIONS)),
+        6 => StateOp::LogicOp(rng.enumeration(&logic_ops)),
+        7 => StateOp::Scissor([rng.int(), rng.int(), rng.count(), rng.count()]),
+        8 => {
+            let pname = rng.enumeration(&FOG_PNAMES);
+            let mut params = rng.params(finite);
+            if pname == GL_FOG_MODE || pname == GL_FOG_COORD_SRC {
+                let modes = [GL_LINEAR, GL_EXP, GL_EXP2, GL_FOG_COORD, GL_FRAGMENT_DEPTH];
+                params
+                    .iter_mut()
+                    .for_each(|p| *p = rng.enumeration(&modes) as f32);
+            }
+            StateOp::Fog(pname, params)
+        }
+        9 => StateOp::PointParameter(rng.enumeration(&POINT_PNAMES), rng.params(finite)),
+        10 => StateOp::PixelStore(
+            rng.enumeration(&PIXEL_STORE_PNAMES),
+            rng.pick(&[0, 1, 2, 3, 4, 8, 16, -1, 33]),
+        ),
+        11 => StateOp::PixelTransfer(rng.enumeration(&PIXEL_TRANSFER_PNAMES), rng.float(finite)),
+        12 => {
+            let size = rng.pick(&[-1, 0, 1, 2, 3, 4, 16, 256, 257]);
+            let values = (0..rng.below(20)).map(|_| rng.float(finite)).collect();
+            StateOp::PixelMap(rng.enumeration(&PIXEL_MAPS), size, values)
+        }
+        13 => {
+            let length = rng.pick(&[0, 34, 128, 300]);
+            StateOp::PolygonStipple((0..length).map(|_| rng.next_u64() as u8).collect())
+        }
+        14 => StateOp::DrawBuffer(rng.enumeration(&COLOR_BUFFERS)),
+        _ => StateOp::ReadBuffer(rng.enumeration(&COLOR_BUFFERS)),
+    }
+}
+
+impl StateOp {
+    /// Whether GL must reject the call, from its arguments alone (conservatively for the
+    /// stipple, whose length depends on the unpack modes: at least 35 bytes, 31 rows of one
+    /// byte and four for the last).
+    fn must_fail(&self) -> bool {
+        let valid = |value: GLenum, set: &[GLenum]| set.contains(&value);
+        let negative = |v: f32| v < 0.0 || v.is_nan();
+        match *self {
+            StateOp::DepthFunc(func)
+            | StateOp::StencilFunc(func, ..)
+            | StateOp::AlphaFunc(func, _) => !valid(func, &COMPARISON_FUNCS),
+            StateOp::StencilOp(ops) => ops.iter().any(|&op| !valid(op, &STENCIL_OPS)),
+            StateOp::BlendFuncSeparate([src, dst, src_alpha, dst_alpha]) => {
+                // GL_SRC_ALPHA_SATURATE (the last) is for sources only.
+                let destinations = &BLEND_FACTORS[..BLEND_FACTORS.len() - 1];
+                !valid(src, &BLEND_FACTORS)
+                    || !valid(src_alpha, &BLEND_FACTORS)
+                    || !valid(dst, destinations)
+                    || !valid(dst_alpha, destinations)
+            }
+            StateOp::BlendEquation(mode) => !valid(mode, &BLEND_EQUATIONS),
+            StateOp::LogicOp(opcode) => !(GL_CLEAR..=GL_SET).contains(&opcode),
+            StateOp::Scissor([_, _, width, height]) => width < 0 || height < 0,
+            StateOp::Fog(pname, ref params) => {
+                let count = if pname == GL_FOG_COLOR { 4 } else { 1 };
+                let first = params.first().copied().unwrap_or(0.0);
+                let as_enum = first as i32 as GLenum;
+                !valid(pname, &FOG_PNAMES)
+                    || params.len() < count
+                    || (pname == GL_FOG_MODE && !valid(as_enum, &[GL_LINEAR, GL_EXP, GL_EXP2]))
+                    || (pname == GL_FOG_COORD_SRC
+                        && !valid(as_enum, &[GL_FOG_COORD, GL_FRAGMENT_DEPTH]))
+                    || (pname == GL_FOG_DENSITY && negative(first))
+            }
+            StateOp::PointParameter(pname, ref params) => {
+                let count = if pname == GL_POINT_DISTANCE_ATTENUATION {
+                    3
+                } else {
+                    1
+                };
+                !valid(pname, &POINT_PNAMES)
+                    || params.len() < count
+                    || (count == 1 && negative(params[0]))
+            }
+            StateOp::PixelStore(pname, value) => {
+                let alignment = matches!(pname, GL_PACK_ALIGNMENT | GL_UNPACK_ALIGNMENT);
+                let boolean = matches!(
+                    pname,
+                    GL_PACK_SWAP_BYTES
+                        | GL_UNPACK_SWAP_BYTES
+                        | GL_PACK_LSB_FIRST
+                        | GL_UNPACK_LSB_FIRST
+                );
+                !valid(pname, &PIXEL_STORE_PNAMES)
+                    || (alignment && !matches!(value, 1 | 2 | 4 | 8))
+                    || (!boolean && value < 0)
+            }
+            StateOp::PixelTransfer(pname, _) => !valid(pname, &PIXEL_TRANSFER_PNAMES),
+            StateOp::PixelMap(map, size, ref values) => {
+                let indexed_by_index = (GL_PIXEL_MAP_I_TO_I..=GL_PIXEL_MAP_I_TO_A).contains(&map);
+                !(1..=256).contains(&size)
+                    || (indexed_by_index && !(size as u32).is_power_of_two())
+                    || !valid(map, &PIXEL_MAPS)
+                    || values.len() < size as usize
+            }
+            StateOp::PolygonStipple(ref bytes) => bytes.len() < 35,
+            StateOp::DrawBuffer(mode) => !valid(mode, &COLOR_BUFFERS),
+            StateOp::ReadBuffer(mode) => !valid(mode, &COLOR_BUFFERS[..3]),
+        }
+    }
+
+    fn apply(&self, ctx: &mut Context) -> GlResult {
+        match *self {
+            StateOp::DepthFunc(func) => ctx.depth_func(func),
+            StateOp::StencilFunc(func, reference, mask) => ctx.stencil_func(func, reference, mask),
+            StateOp::StencilOp([fail, depth_fail, depth_pass]) => {
+                ctx.stencil_op(fail, depth_fail, depth_pass)
+            }
+            StateOp::AlphaFunc(func, reference) => ctx.alpha_func(func, reference),
+            StateOp::BlendFuncSeparate([a, b, c, d]) => ctx.blend_func_separate(a, b, c, d),
+            StateOp::BlendEquation(mode) => ctx.blend_equation(mode),
+            StateOp::LogicOp(opcode) => ctx.logic_op(opcode),
+            StateOp::Scissor([x, y, width, height]) => ctx.scissor(x, y, width, height),
+            StateOp::Fog(pname, ref params) => ctx.fog(pname, params),
+            StateOp::PointParameter(pname, ref params) => ctx.point_parameter(pname, params),
+            StateOp::PixelStore(pname, value) => ctx.pixel_store(pname, StoreParam::Int(value)),
+            StateOp::PixelTransfer(pname, value) => ctx.pixel_transfer(pname, value),
+            StateOp::PixelMap(map, size, ref values) => ctx.pixel_map(map, size, values),
+            StateOp::PolygonStipple(ref bytes) => ctx.polygon_stipple(bytes),
+            StateOp::DrawBuffer(mode) => ctx.draw_buffer(mode),
+            StateOp::ReadBuffer(mode) => ctx.read_buffer(mode),
+        }
+    }
+}
 
 /// Where the `ArraySources` of a Rust draw start: at the draw's lowest index, as the C layer
 /// builds them, at element 0, or past the lowest index (a caller's mistake).
@@ -729,6 +893,8 @@ enum Op {
     ClearColor(Vec4),
     ClearDepth(f64),
     Clear(u32),
+    /// A command of the state that does not change vertex processing.
+    State(StateOp),
     Finish,
     Pointer {
         kind: ArrayKind,
@@ -995,6 +1161,7 @@ impl Op {
             }
             Op::GetString(name) => !valid(name, &STRING_NAMES),
             Op::GetPointer(pname) => !valid(pname, &POINTER_PNAMES),
+            Op::State(ref command) => command.must_fail(),
             _ => false,
         }
     }
@@ -1071,7 +1238,7 @@ impl ArrayBytes {
 /// Any command, arguments half valid, half not.
 fn any_op(rng: &mut Rng, finite: bool) -> Op {
     let f = finite;
-    match rng.below(88) {
+    match rng.below(96) {
         0..=2 => Op::Light {
             light: rng.enumeration(&LIGHTS),
             pname: rng.enumeration(&LIGHT_PNAMES),
@@ -1256,6 +1423,7 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
         76..=79 => Op::GetError,
         80 => select_buffer(rng),
         81 => Op::RenderMode(GL_SELECT),
+        88..=95 => Op::State(state_op(rng, finite)),
         _ => name_op(rng),
     }
 }
@@ -1546,6 +1714,7 @@ fn apply(
         Op::ClearColor(c) => ctx.clear_color(*c),
         Op::ClearDepth(d) => ctx.clear_depth(*d),
         Op::Clear(mask) => ctx.clear(*mask),
+        Op::State(command) => command.apply(ctx),
         Op::Finish => ctx.finish(),
         Op::Pointer {
             kind,
