@@ -30,23 +30,6 @@ typedef double GLclampd;
 #endif
 
 /*
- The stencil bits of the framebuffer fflight describes (GL_STENCIL_BITS): the reference value
- is clamped to [0, 2^8 - 1] (§4.1.5).
- */
-#define STENCIL_BITS 8
-
-/*
- GL_MAX_PIXEL_MAP_TABLE (Mesa's value; the minimum is 32).
- */
-#define MAX_PIXEL_MAP_TABLE 256
-
-/*
- The largest point size and line width (GL_POINT_SIZE_RANGE, GL_LINE_WIDTH_RANGE): there is
- no rasterizer, so any size is as good as any other.
- */
-#define MAX_POINT_SIZE 1024.0
-
-/*
  A context as applications hold it (`FflContext *` in C).
  */
 typedef struct FflContext FflContext;
@@ -1711,11 +1694,6 @@ typedef struct FflCapturedPrimitive {
 #endif
 
 
-
-/*
- The targets of glHint.
- */
-#define HINT_TARGETS { GL_PERSPECTIVE_CORRECTION_HINT, GL_POINT_SMOOTH_HINT, GL_LINE_SMOOTH_HINT, GL_POLYGON_SMOOTH_HINT, GL_FOG_HINT, GL_GENERATE_MIPMAP_HINT, GL_TEXTURE_COMPRESSION_HINT, }
 
 
 

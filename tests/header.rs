@@ -33,6 +33,23 @@ fn checked_in_entry_points_match_the_table() {
     );
 }
 
+/// The header defines GL's names and its own guard only: a crate-internal `pub const` that
+/// cbindgen would export belongs in cbindgen.toml's `exclude`.
+#[test]
+fn header_defines_only_gl_names() {
+    let header = std::fs::read_to_string(manifest_dir().join("include/fflight.h")).unwrap();
+    let strays: Vec<&str> = header
+        .lines()
+        .filter_map(|l| l.strip_prefix("#define "))
+        .filter_map(|rest| rest.split_whitespace().next())
+        .filter(|name| !name.starts_with("GL_") && *name != "FFLIGHT_H")
+        .collect();
+    assert!(
+        strays.is_empty(),
+        "not GL names: {strays:?} (see cbindgen.toml's exclude)"
+    );
+}
+
 fn compile(name: &str, source: &str, extra_flags: &[&str]) {
     let dir = manifest_dir().join("target/header_tests");
     std::fs::create_dir_all(&dir).unwrap();
