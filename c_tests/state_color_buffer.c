@@ -1,6 +1,7 @@
 /* ffl-test: differential */
 /*
- * The color-buffer and accumulation-buffer attribute groups (§4.1.8-4.1.10, §4.2;
+ * The color-buffer and accumulation-buffer attribute groups, glAccum without an
+ * accumulation buffer (§4.1.8-4.1.10, §4.2;
  * tables 6.19, 6.20): blending, logic op, dithering, the draw and read buffers, the write
  * masks and clear values. Initial values, values set and read back, the errors (after
  * which the state must be unchanged), GL_INVALID_OPERATION between glBegin and glEnd.
@@ -44,6 +45,8 @@ int main(void)
     ffl_print_bools("doublebuffer", GL_DOUBLEBUFFER, 1, 0);
     ffl_print_bools("stereo", GL_STEREO, 1, 0);
     ffl_print_bools("multisample", GL_MULTISAMPLE, 1, 1);
+    ffl_print_ints("accum_bits", GL_ACCUM_RED_BITS, 1);
+    ffl_print_ints("accum_alpha_bits", GL_ACCUM_ALPHA_BITS, 1);
     print_color_buffer("initial");
     ffl_print_error("initial_queries");
 
@@ -92,6 +95,14 @@ int main(void)
     ffl_print_error("draw_buffer_bad_enum");
     glReadBuffer(GL_DEPTH_TEST);
     ffl_print_error("read_buffer_bad_enum");
+    glAccum(GL_ADD + 1, 1.0f);
+    ffl_print_error("accum_bad_op");
+    glAccum(GL_LOAD, 1.0f);
+    ffl_print_error("accum_no_accumulation_buffer");
+    glBegin(GL_POINTS);
+    glAccum(GL_ACCUM, 0.5f);
+    glEnd();
+    ffl_print_error("accum_inside_begin_end");
     glBegin(GL_POINTS);
     glBlendFunc(GL_ONE, GL_ONE);
     glEnd();

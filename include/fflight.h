@@ -1693,6 +1693,42 @@ typedef struct FflCapturedPrimitive {
 #define GL_SAMPLE_COVERAGE_INVERT 32939
 #endif
 
+#ifndef GL_ACCUM_RED_BITS
+#define GL_ACCUM_RED_BITS 3416
+#endif
+
+#ifndef GL_ACCUM_GREEN_BITS
+#define GL_ACCUM_GREEN_BITS 3417
+#endif
+
+#ifndef GL_ACCUM_BLUE_BITS
+#define GL_ACCUM_BLUE_BITS 3418
+#endif
+
+#ifndef GL_ACCUM_ALPHA_BITS
+#define GL_ACCUM_ALPHA_BITS 3419
+#endif
+
+#ifndef GL_ACCUM
+#define GL_ACCUM 256
+#endif
+
+#ifndef GL_LOAD
+#define GL_LOAD 257
+#endif
+
+#ifndef GL_RETURN
+#define GL_RETURN 258
+#endif
+
+#ifndef GL_MULT
+#define GL_MULT 259
+#endif
+
+#ifndef GL_ADD
+#define GL_ADD 260
+#endif
+
 
 
 
@@ -2480,6 +2516,11 @@ void glClearDepth(GLclampd depth);
 void glClearStencil(GLint s);
 
 void glClearAccum(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
+
+/*
+ There is no accumulation buffer: GL_INVALID_OPERATION for a valid operation.
+ */
+void glAccum(GLenum op, GLfloat value);
 
 void glPixelStoref(GLenum pname, GLfloat param);
 

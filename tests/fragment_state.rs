@@ -587,6 +587,16 @@ const BAD_CALLS: &[(&str, Command, GlError)] = &[
         GlError::InvalidValue,
     ),
     (
+        "accum op",
+        |c| c.accum(GL_ADD + 1, 1.0),
+        GlError::InvalidEnum,
+    ),
+    (
+        "accum without a buffer",
+        |c| c.accum(GL_LOAD, 1.0),
+        GlError::InvalidOperation,
+    ),
+    (
         "pixel store pname",
         |c| c.pixel_store(GL_ZOOM_X, StoreParam::Int(1)),
         GlError::InvalidEnum,

@@ -2589,6 +2589,7 @@ unsafe extern "C" {
     safe fn glLogicOp(opcode: GLenum);
     safe fn glDrawBuffer(mode: GLenum);
     safe fn glReadBuffer(mode: GLenum);
+    safe fn glAccum(op: GLenum, value: GLfloat);
     fn glRectfv(v1: *const GLfloat, v2: *const GLfloat);
     fn glRectdv(v1: *const GLdouble, v2: *const GLdouble);
     fn glRectiv(v1: *const GLint, v2: *const GLint);
@@ -2873,7 +2874,12 @@ unsafe fn bad_call(rng: &mut Rng) -> String {
                 4 => glDrawBuffer(rng.invalid_enum(&COLOR_BUFFERS)),
                 _ => glReadBuffer(rng.invalid_enum(&COLOR_BUFFERS[..3])),
             },
-            63 => match rng.below(3) {
+            63 => match rng.below(4) {
+                // Without an accumulation buffer every glAccum is an error.
+                3 => glAccum(
+                    rng.enumeration(&[GL_ACCUM, GL_LOAD, GL_RETURN, GL_MULT, GL_ADD]),
+                    0.5,
+                ),
                 0 => glHint(rng.invalid_enum(&HINT_TARGETS), GL_NICEST),
                 1 => glPixelMapfv(rng.invalid_enum(&PIXEL_MAPS), 2, floats.as_ptr()),
                 _ => glGetPixelMapfv(rng.invalid_enum(&PIXEL_MAPS), out.as_mut_ptr()),

@@ -354,6 +354,14 @@ pub extern "C" fn glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alph
     })
 }
 
+/// There is no accumulation buffer: GL_INVALID_OPERATION for a valid operation.
+#[unsafe(no_mangle)]
+pub extern "C" fn glAccum(op: GLenum, value: GLfloat) {
+    with_context(|ctx| {
+        ctx.accum(op, value)
+    })
+}
+
 #[unsafe(no_mangle)]
 pub extern "C" fn glPixelStoref(pname: GLenum, param: GLfloat) {
     with_context(|ctx| {

@@ -247,6 +247,17 @@ impl Context {
         Ok(())
     }
 
+    /// glAccum (§4.2.4): fflight's framebuffer has no accumulation buffer (GL_ACCUM_*_BITS 0),
+    /// so a valid operation is GL_INVALID_OPERATION; the operation is checked first, as Mesa
+    /// does.
+    pub fn accum(&mut self, op: GLenum, _value: f32) -> GlResult {
+        self.outside_begin_end()?;
+        if !(GL_ACCUM..=GL_ADD).contains(&op) {
+            return Err(GlError::InvalidEnum);
+        }
+        Err(GlError::InvalidOperation)
+    }
+
     /// The per-fragment and framebuffer-control values of glGet (tables 6.19, 6.20), or None
     /// for a pname that is not theirs.
     pub(crate) fn get_fragment_state(&self, pname: GLenum) -> Option<StateValue> {
@@ -284,7 +295,8 @@ impl Context {
             GL_COLOR_CLEAR_VALUE => normalized(&color.clear_color.to_array()),
             GL_INDEX_CLEAR_VALUE => floats(&[color.clear_index]),
             GL_ACCUM_CLEAR_VALUE => normalized(&self.accum.clear_value.to_array()),
-            GL_AUX_BUFFERS => int(0),
+            GL_AUX_BUFFERS | GL_ACCUM_RED_BITS | GL_ACCUM_GREEN_BITS | GL_ACCUM_BLUE_BITS
+            | GL_ACCUM_ALPHA_BITS => int(0),
             GL_DOUBLEBUFFER | GL_STEREO => StateValue::Bools(vec![false]),
             _ => return None,
         })

@@ -67,7 +67,11 @@ pub const PIXEL_TRANSFER_PNAMES: [GLenum; 14] = [
     GL_DEPTH_BIAS,
 ];
 /// The other glGet pnames of this state.
-pub const OTHER_STATE_PNAMES: [GLenum; 55] = [
+pub const OTHER_STATE_PNAMES: [GLenum; 59] = [
+    GL_ACCUM_RED_BITS,
+    GL_ACCUM_GREEN_BITS,
+    GL_ACCUM_BLUE_BITS,
+    GL_ACCUM_ALPHA_BITS,
     GL_SAMPLE_COVERAGE_VALUE,
     GL_SAMPLE_COVERAGE_INVERT,
     GL_SAMPLE_BUFFERS,
