@@ -129,3 +129,72 @@ fn header_compiles_as_cpp() {
         &["-x", "c++", "-std=c++11"],
     );
 }
+
+/// The generator build.rs runs on src/capi/entry_points.txt.
+#[path = "../build/entry_points.rs"]
+mod entry_points;
+
+/// One line of each kind makes the function it describes: reads before the call, a written
+/// result through `write`, a filled slice through `read_mut`, docs and a safety section.
+#[test]
+fn the_entry_point_generator_writes_what_a_line_says() {
+    let table = "\
+use crate::state::fog::fog_param_count;
+/// Fog.
+void glFogfv(GLenum pname, const GLfloat *params[fog_param_count(pname).unwrap_or(0)]) => ctx.fog(pname, params)
+void glGetPixelMapfv(GLenum map, GLfloat *values[out]) => ctx.get_pixel_map(map)
+void glGetPolygonStipple(GLubyte *mask[ctx.polygon_stipple_pack_span()]) => ctx.get_polygon_stipple(mask)
+GLboolean glIsEnabled(GLenum cap) => ctx.is_enabled(cap).map(GLboolean::from)
+";
+    let code = entry_points::generate(table).expect("a valid table");
+    for expected in [
+        "use super::{read, read_mut, with_context, write};",
+        "use crate::state::fog::fog_param_count;",
+        "/// Fog.\n///\n/// # Safety\n/// `params` is NULL or points to the values the command reads.\n",
+        "pub unsafe extern \"C\" fn glFogfv(pname: GLenum, params: *const GLfloat) {",
+        "let params = unsafe { read(params, fog_param_count(pname).unwrap_or(0)) };\n        \
+         ctx.fog(pname, params)",
+        "pub unsafe extern \"C\" fn glGetPixelMapfv(map: GLenum, values: *mut GLfloat) {",
+        "let written = ctx.get_pixel_map(map)?;",
+        "unsafe { write(values, &written[..]) }",
+        "let mask = unsafe { read_mut(mask, ctx.polygon_stipple_pack_span()) };",
+        "pub extern \"C\" fn glIsEnabled(cap: GLenum) -> GLboolean {",
+    ] {
+        assert!(code.contains(expected), "missing:\n{expected}\nin:\n{code}");
+    }
+}
+
+/// A line the generator cannot read is an error naming it, never a guess.
+#[test]
+fn the_entry_point_generator_rejects_malformed_lines() {
+    for (line, message) in [
+        ("void glFoo(GLenum a)", "no `=>`"),
+        (
+            "void glFoo(const GLfloat *v) => ctx.foo(v)",
+            "needs `[count]`",
+        ),
+        (
+            "void glFoo(GLenum a[2]) => ctx.foo(a)",
+            "only a pointer takes brackets",
+        ),
+        (
+            "void glFoo(const GLfloat *v[out]) => ctx.foo(v)",
+            "not const",
+        ),
+        ("void glFoo(unsigned a) => ctx.foo(a)", "unknown C type"),
+        (
+            "void glFoo(GLfloat *a[out], GLfloat *b[out]) => ctx.foo()",
+            "more than one",
+        ),
+        (
+            "GLint glFoo(GLfloat *a[out]) => ctx.foo()",
+            "cannot also have",
+        ),
+    ] {
+        let error = entry_points::generate(line).expect_err(line);
+        assert!(
+            error.contains(message) && error.contains("line 1"),
+            "{line}: {error}"
+        );
+    }
+}
