@@ -36,8 +36,8 @@ impl Context {
         self.pixel_maps.set(map, mapsize, values)
     }
 
-    /// glPixelMapuiv / glPixelMapusv: color values are mapped from [0, max] to [0, 1] by
-    /// `to_color`, index values converted directly.
+    /// glPixelMapuiv / glPixelMapusv: color values are mapped from [0, max] to [0, 1] (`max`
+    /// is the type's largest value), index values converted directly.
     pub fn pixel_map_integers<T: Copy + Into<f64>>(
         &mut self,
         map: GLenum,
