@@ -1,5 +1,10 @@
-//! Generates the C header with cbindgen into OUT_DIR; `FFLIGHT_BLESS=1` also copies it over
-//! the checked-in `include/fflight.h` (tests/header.rs fails when the two differ).
+//! Generates the table-made entry points (src/capi/entry_points.txt, see
+//! build/entry_points.rs) and the C header with cbindgen into OUT_DIR; `FFLIGHT_BLESS=1` also
+//! copies them over the checked-in `src/capi/generated.rs` and `include/fflight.h`
+//! (tests/header.rs fails when a checked-in copy differs from its generated one).
+
+#[path = "build/entry_points.rs"]
+mod entry_points;
 
 use std::env;
 use std::fs;
@@ -9,20 +14,34 @@ fn main() {
     let crate_dir = PathBuf::from(env::var("CARGO_MANIFEST_DIR").expect("set by cargo"));
     let out_dir = PathBuf::from(env::var("OUT_DIR").expect("set by cargo"));
     println!("cargo:rerun-if-changed=src");
+    println!("cargo:rerun-if-changed=build");
     println!("cargo:rerun-if-changed=cbindgen.toml");
     println!("cargo:rerun-if-env-changed=FFLIGHT_BLESS");
 
+    let bless = env::var_os("FFLIGHT_BLESS").is_some_and(|v| v == "1");
+
+    // First the entry points, so that a blessed run's header declares the new ones.
+    let table = fs::read_to_string(crate_dir.join("src/capi/entry_points.txt"))
+        .expect("src/capi/entry_points.txt exists");
+    let generated =
+        entry_points::generate(&table).unwrap_or_else(|e| panic!("src/capi/entry_points.txt, {e}"));
+    fs::write(out_dir.join("generated.rs"), &generated).expect("OUT_DIR is writable");
+    let checked_in = crate_dir.join("src/capi/generated.rs");
+    if bless && fs::read_to_string(&checked_in).ok().as_deref() != Some(&generated) {
+        fs::write(&checked_in, &generated).expect("src/capi is writable");
+    }
+
     let config = cbindgen::Config::from_file(crate_dir.join("cbindgen.toml"))
         .expect("cbindgen.toml is valid");
-    let mut generated = Vec::new();
+    let mut bindings = Vec::new();
     cbindgen::generate_with_config(&crate_dir, config)
         .expect("cbindgen can read the crate")
-        .write(&mut generated);
-    let header = guard_gl_names(&String::from_utf8(generated).expect("cbindgen writes UTF-8"));
+        .write(&mut bindings);
+    let header = guard_gl_names(&String::from_utf8(bindings).expect("cbindgen writes UTF-8"));
     let header = match_gl_array_parameters(header);
 
     fs::write(out_dir.join("fflight.h"), &header).expect("OUT_DIR is writable");
-    if env::var_os("FFLIGHT_BLESS").is_some_and(|v| v == "1") {
+    if bless {
         fs::write(crate_dir.join("include/fflight.h"), &header).expect("include/ is writable");
     }
 }

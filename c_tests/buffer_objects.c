@@ -11,7 +11,6 @@
  *
  * osmesa-known: line-reset
  */
-#define GL_GLEXT_PROTOTYPES
 #include "ffl_test.h"
 
 #define COUNT 10

@@ -9,7 +9,6 @@
  * glDrawArrays with a mapped vertex array buffer and for glDrawElements with
  * a mapped element array buffer.
  */
-#define GL_GLEXT_PROTOTYPES
 #include "ffl_test.h"
 
 int main(void)

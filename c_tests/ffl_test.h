@@ -54,6 +54,8 @@
 #include <math.h>
 
 #ifdef FFL_OSMESA
+/* <GL/glext.h> declares the GL 1.4 and 1.5 functions (glBlendFuncSeparate, ...) only then. */
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 #include <GL/osmesa.h>
 #define FFL_IMPL_NAME "osmesa"
@@ -71,7 +73,9 @@ static inline void ffl_test_init(void)
 {
 #ifdef FFL_OSMESA
     static GLubyte color_buffer[64 * 64 * 4];
-    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    /* 8 stencil bits, as fflight describes its framebuffer (GL_STENCIL_BITS): the
+     * stencil reference is clamped to them. */
+    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
     if (ctx == NULL) {
         fprintf(stderr, "OSMesaCreateContextExt failed\n");
         exit(2);
@@ -137,6 +141,52 @@ static inline const char *ffl_error_name(GLenum e)
 static inline void ffl_print_error(const char *what)
 {
     printf("%s %s\n", what, ffl_error_name(glGetError()));
+}
+
+/* ---- state queries --------------------------------------------------------- */
+
+/* Prints "<what> i v0 ... v(n-1)": n values of glGetIntegerv (unwritten ones show -7). */
+static inline void ffl_print_ints(const char *what, GLenum pname, int n)
+{
+    GLint v[16];
+    int i;
+    for (i = 0; i < 16; i++)
+        v[i] = -7;
+    glGetIntegerv(pname, v);
+    printf("%s i", what);
+    for (i = 0; i < n; i++)
+        printf(" %d", (int)v[i]);
+    printf("\n");
+}
+
+/* Prints "<what> f v0 ... v(n-1)": n values of glGetFloatv. */
+static inline void ffl_print_floats(const char *what, GLenum pname, int n)
+{
+    GLfloat v[16];
+    int i;
+    for (i = 0; i < 16; i++)
+        v[i] = -7.0f;
+    glGetFloatv(pname, v);
+    printf("%s", what);
+    ffl_pfv("f", v, n);
+    printf("\n");
+}
+
+/* Prints "<what> b v0 ... v(n-1)": n values of glGetBooleanv, and for one value also
+ * glIsEnabled's answer when `cap` is set. */
+static inline void ffl_print_bools(const char *what, GLenum pname, int n, int cap)
+{
+    GLboolean v[16];
+    int i;
+    for (i = 0; i < 16; i++)
+        v[i] = 7;
+    glGetBooleanv(pname, v);
+    printf("%s b", what);
+    for (i = 0; i < n; i++)
+        printf(" %d", (int)v[i]);
+    if (cap)
+        printf(" enabled %d", (int)glIsEnabled(pname));
+    printf("\n");
 }
 
 /* Number of values per vertex in a feedback buffer of the given type. */

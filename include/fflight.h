@@ -1102,6 +1102,742 @@ typedef struct FflCapturedPrimitive {
 #define GL_BUFFER_MAP_POINTER 35005
 #endif
 
+#ifndef GL_NEVER
+#define GL_NEVER 512
+#endif
+
+#ifndef GL_LESS
+#define GL_LESS 513
+#endif
+
+#ifndef GL_EQUAL
+#define GL_EQUAL 514
+#endif
+
+#ifndef GL_LEQUAL
+#define GL_LEQUAL 515
+#endif
+
+#ifndef GL_GREATER
+#define GL_GREATER 516
+#endif
+
+#ifndef GL_NOTEQUAL
+#define GL_NOTEQUAL 517
+#endif
+
+#ifndef GL_GEQUAL
+#define GL_GEQUAL 518
+#endif
+
+#ifndef GL_ALWAYS
+#define GL_ALWAYS 519
+#endif
+
+#ifndef GL_DEPTH_FUNC
+#define GL_DEPTH_FUNC 2932
+#endif
+
+#ifndef GL_DEPTH_WRITEMASK
+#define GL_DEPTH_WRITEMASK 2930
+#endif
+
+#ifndef GL_STENCIL_FUNC
+#define GL_STENCIL_FUNC 2962
+#endif
+
+#ifndef GL_STENCIL_VALUE_MASK
+#define GL_STENCIL_VALUE_MASK 2963
+#endif
+
+#ifndef GL_STENCIL_REF
+#define GL_STENCIL_REF 2967
+#endif
+
+#ifndef GL_STENCIL_FAIL
+#define GL_STENCIL_FAIL 2964
+#endif
+
+#ifndef GL_STENCIL_PASS_DEPTH_FAIL
+#define GL_STENCIL_PASS_DEPTH_FAIL 2965
+#endif
+
+#ifndef GL_STENCIL_PASS_DEPTH_PASS
+#define GL_STENCIL_PASS_DEPTH_PASS 2966
+#endif
+
+#ifndef GL_STENCIL_CLEAR_VALUE
+#define GL_STENCIL_CLEAR_VALUE 2961
+#endif
+
+#ifndef GL_STENCIL_WRITEMASK
+#define GL_STENCIL_WRITEMASK 2968
+#endif
+
+#ifndef GL_KEEP
+#define GL_KEEP 7680
+#endif
+
+#ifndef GL_REPLACE
+#define GL_REPLACE 7681
+#endif
+
+#ifndef GL_INCR
+#define GL_INCR 7682
+#endif
+
+#ifndef GL_DECR
+#define GL_DECR 7683
+#endif
+
+#ifndef GL_INVERT
+#define GL_INVERT 5386
+#endif
+
+#ifndef GL_INCR_WRAP
+#define GL_INCR_WRAP 34055
+#endif
+
+#ifndef GL_DECR_WRAP
+#define GL_DECR_WRAP 34056
+#endif
+
+#ifndef GL_STENCIL_BITS
+#define GL_STENCIL_BITS 3415
+#endif
+
+#ifndef GL_ZERO
+#define GL_ZERO 0
+#endif
+
+#ifndef GL_ONE
+#define GL_ONE 1
+#endif
+
+#ifndef GL_SRC_COLOR
+#define GL_SRC_COLOR 768
+#endif
+
+#ifndef GL_ONE_MINUS_SRC_COLOR
+#define GL_ONE_MINUS_SRC_COLOR 769
+#endif
+
+#ifndef GL_SRC_ALPHA
+#define GL_SRC_ALPHA 770
+#endif
+
+#ifndef GL_ONE_MINUS_SRC_ALPHA
+#define GL_ONE_MINUS_SRC_ALPHA 771
+#endif
+
+#ifndef GL_DST_ALPHA
+#define GL_DST_ALPHA 772
+#endif
+
+#ifndef GL_ONE_MINUS_DST_ALPHA
+#define GL_ONE_MINUS_DST_ALPHA 773
+#endif
+
+#ifndef GL_DST_COLOR
+#define GL_DST_COLOR 774
+#endif
+
+#ifndef GL_ONE_MINUS_DST_COLOR
+#define GL_ONE_MINUS_DST_COLOR 775
+#endif
+
+#ifndef GL_SRC_ALPHA_SATURATE
+#define GL_SRC_ALPHA_SATURATE 776
+#endif
+
+#ifndef GL_CONSTANT_COLOR
+#define GL_CONSTANT_COLOR 32769
+#endif
+
+#ifndef GL_ONE_MINUS_CONSTANT_COLOR
+#define GL_ONE_MINUS_CONSTANT_COLOR 32770
+#endif
+
+#ifndef GL_CONSTANT_ALPHA
+#define GL_CONSTANT_ALPHA 32771
+#endif
+
+#ifndef GL_ONE_MINUS_CONSTANT_ALPHA
+#define GL_ONE_MINUS_CONSTANT_ALPHA 32772
+#endif
+
+#ifndef GL_BLEND_SRC
+#define GL_BLEND_SRC 3041
+#endif
+
+#ifndef GL_BLEND_DST
+#define GL_BLEND_DST 3040
+#endif
+
+#ifndef GL_BLEND_SRC_RGB
+#define GL_BLEND_SRC_RGB 32969
+#endif
+
+#ifndef GL_BLEND_DST_RGB
+#define GL_BLEND_DST_RGB 32968
+#endif
+
+#ifndef GL_BLEND_SRC_ALPHA
+#define GL_BLEND_SRC_ALPHA 32971
+#endif
+
+#ifndef GL_BLEND_DST_ALPHA
+#define GL_BLEND_DST_ALPHA 32970
+#endif
+
+#ifndef GL_BLEND_EQUATION
+#define GL_BLEND_EQUATION 32777
+#endif
+
+#ifndef GL_BLEND_COLOR
+#define GL_BLEND_COLOR 32773
+#endif
+
+#ifndef GL_FUNC_ADD
+#define GL_FUNC_ADD 32774
+#endif
+
+#ifndef GL_FUNC_SUBTRACT
+#define GL_FUNC_SUBTRACT 32778
+#endif
+
+#ifndef GL_FUNC_REVERSE_SUBTRACT
+#define GL_FUNC_REVERSE_SUBTRACT 32779
+#endif
+
+#ifndef GL_MIN
+#define GL_MIN 32775
+#endif
+
+#ifndef GL_MAX
+#define GL_MAX 32776
+#endif
+
+#ifndef GL_ALPHA_TEST_FUNC
+#define GL_ALPHA_TEST_FUNC 3009
+#endif
+
+#ifndef GL_ALPHA_TEST_REF
+#define GL_ALPHA_TEST_REF 3010
+#endif
+
+#ifndef GL_LOGIC_OP_MODE
+#define GL_LOGIC_OP_MODE 3056
+#endif
+
+#ifndef GL_CLEAR
+#define GL_CLEAR 5376
+#endif
+
+#ifndef GL_AND
+#define GL_AND 5377
+#endif
+
+#ifndef GL_AND_REVERSE
+#define GL_AND_REVERSE 5378
+#endif
+
+#ifndef GL_COPY
+#define GL_COPY 5379
+#endif
+
+#ifndef GL_AND_INVERTED
+#define GL_AND_INVERTED 5380
+#endif
+
+#ifndef GL_NOOP
+#define GL_NOOP 5381
+#endif
+
+#ifndef GL_XOR
+#define GL_XOR 5382
+#endif
+
+#ifndef GL_OR
+#define GL_OR 5383
+#endif
+
+#ifndef GL_NOR
+#define GL_NOR 5384
+#endif
+
+#ifndef GL_EQUIV
+#define GL_EQUIV 5385
+#endif
+
+#ifndef GL_OR_REVERSE
+#define GL_OR_REVERSE 5387
+#endif
+
+#ifndef GL_COPY_INVERTED
+#define GL_COPY_INVERTED 5388
+#endif
+
+#ifndef GL_OR_INVERTED
+#define GL_OR_INVERTED 5389
+#endif
+
+#ifndef GL_NAND
+#define GL_NAND 5390
+#endif
+
+#ifndef GL_SET
+#define GL_SET 5391
+#endif
+
+#ifndef GL_INDEX_WRITEMASK
+#define GL_INDEX_WRITEMASK 3105
+#endif
+
+#ifndef GL_COLOR_WRITEMASK
+#define GL_COLOR_WRITEMASK 3107
+#endif
+
+#ifndef GL_INDEX_CLEAR_VALUE
+#define GL_INDEX_CLEAR_VALUE 3104
+#endif
+
+#ifndef GL_ACCUM_CLEAR_VALUE
+#define GL_ACCUM_CLEAR_VALUE 2944
+#endif
+
+#ifndef GL_DRAW_BUFFER
+#define GL_DRAW_BUFFER 3073
+#endif
+
+#ifndef GL_READ_BUFFER
+#define GL_READ_BUFFER 3074
+#endif
+
+#ifndef GL_NONE
+#define GL_NONE 0
+#endif
+
+#ifndef GL_FRONT_LEFT
+#define GL_FRONT_LEFT 1024
+#endif
+
+#ifndef GL_FRONT_RIGHT
+#define GL_FRONT_RIGHT 1025
+#endif
+
+#ifndef GL_BACK_LEFT
+#define GL_BACK_LEFT 1026
+#endif
+
+#ifndef GL_BACK_RIGHT
+#define GL_BACK_RIGHT 1027
+#endif
+
+#ifndef GL_LEFT
+#define GL_LEFT 1030
+#endif
+
+#ifndef GL_RIGHT
+#define GL_RIGHT 1031
+#endif
+
+#ifndef GL_AUX0
+#define GL_AUX0 1033
+#endif
+
+#ifndef GL_AUX1
+#define GL_AUX1 1034
+#endif
+
+#ifndef GL_AUX2
+#define GL_AUX2 1035
+#endif
+
+#ifndef GL_AUX3
+#define GL_AUX3 1036
+#endif
+
+#ifndef GL_AUX_BUFFERS
+#define GL_AUX_BUFFERS 3072
+#endif
+
+#ifndef GL_DOUBLEBUFFER
+#define GL_DOUBLEBUFFER 3122
+#endif
+
+#ifndef GL_STEREO
+#define GL_STEREO 3123
+#endif
+
+#ifndef GL_SCISSOR_BOX
+#define GL_SCISSOR_BOX 3088
+#endif
+
+#ifndef GL_FOG_COLOR
+#define GL_FOG_COLOR 2918
+#endif
+
+#ifndef GL_FOG_INDEX
+#define GL_FOG_INDEX 2913
+#endif
+
+#ifndef GL_FOG_DENSITY
+#define GL_FOG_DENSITY 2914
+#endif
+
+#ifndef GL_FOG_START
+#define GL_FOG_START 2915
+#endif
+
+#ifndef GL_FOG_END
+#define GL_FOG_END 2916
+#endif
+
+#ifndef GL_FOG_MODE
+#define GL_FOG_MODE 2917
+#endif
+
+#ifndef GL_LINEAR
+#define GL_LINEAR 9729
+#endif
+
+#ifndef GL_EXP
+#define GL_EXP 2048
+#endif
+
+#ifndef GL_EXP2
+#define GL_EXP2 2049
+#endif
+
+#ifndef GL_FOG_COORD_SRC
+#define GL_FOG_COORD_SRC 33872
+#endif
+
+#ifndef GL_FOG_COORD
+#define GL_FOG_COORD 33873
+#endif
+
+#ifndef GL_FRAGMENT_DEPTH
+#define GL_FRAGMENT_DEPTH 33874
+#endif
+
+#ifndef GL_POINT_SIZE_MIN
+#define GL_POINT_SIZE_MIN 33062
+#endif
+
+#ifndef GL_POINT_SIZE_MAX
+#define GL_POINT_SIZE_MAX 33063
+#endif
+
+#ifndef GL_POINT_FADE_THRESHOLD_SIZE
+#define GL_POINT_FADE_THRESHOLD_SIZE 33064
+#endif
+
+#ifndef GL_POINT_DISTANCE_ATTENUATION
+#define GL_POINT_DISTANCE_ATTENUATION 33065
+#endif
+
+#ifndef GL_LINE_STIPPLE_PATTERN
+#define GL_LINE_STIPPLE_PATTERN 2853
+#endif
+
+#ifndef GL_LINE_STIPPLE_REPEAT
+#define GL_LINE_STIPPLE_REPEAT 2854
+#endif
+
+#ifndef GL_POLYGON_OFFSET_FACTOR
+#define GL_POLYGON_OFFSET_FACTOR 32824
+#endif
+
+#ifndef GL_POLYGON_OFFSET_UNITS
+#define GL_POLYGON_OFFSET_UNITS 10752
+#endif
+
+#ifndef GL_UNPACK_SWAP_BYTES
+#define GL_UNPACK_SWAP_BYTES 3312
+#endif
+
+#ifndef GL_UNPACK_LSB_FIRST
+#define GL_UNPACK_LSB_FIRST 3313
+#endif
+
+#ifndef GL_UNPACK_ROW_LENGTH
+#define GL_UNPACK_ROW_LENGTH 3314
+#endif
+
+#ifndef GL_UNPACK_SKIP_ROWS
+#define GL_UNPACK_SKIP_ROWS 3315
+#endif
+
+#ifndef GL_UNPACK_SKIP_PIXELS
+#define GL_UNPACK_SKIP_PIXELS 3316
+#endif
+
+#ifndef GL_UNPACK_ALIGNMENT
+#define GL_UNPACK_ALIGNMENT 3317
+#endif
+
+#ifndef GL_UNPACK_IMAGE_HEIGHT
+#define GL_UNPACK_IMAGE_HEIGHT 32878
+#endif
+
+#ifndef GL_UNPACK_SKIP_IMAGES
+#define GL_UNPACK_SKIP_IMAGES 32877
+#endif
+
+#ifndef GL_PACK_SWAP_BYTES
+#define GL_PACK_SWAP_BYTES 3328
+#endif
+
+#ifndef GL_PACK_LSB_FIRST
+#define GL_PACK_LSB_FIRST 3329
+#endif
+
+#ifndef GL_PACK_ROW_LENGTH
+#define GL_PACK_ROW_LENGTH 3330
+#endif
+
+#ifndef GL_PACK_SKIP_ROWS
+#define GL_PACK_SKIP_ROWS 3331
+#endif
+
+#ifndef GL_PACK_SKIP_PIXELS
+#define GL_PACK_SKIP_PIXELS 3332
+#endif
+
+#ifndef GL_PACK_ALIGNMENT
+#define GL_PACK_ALIGNMENT 3333
+#endif
+
+#ifndef GL_PACK_IMAGE_HEIGHT
+#define GL_PACK_IMAGE_HEIGHT 32876
+#endif
+
+#ifndef GL_PACK_SKIP_IMAGES
+#define GL_PACK_SKIP_IMAGES 32875
+#endif
+
+#ifndef GL_MAP_COLOR
+#define GL_MAP_COLOR 3344
+#endif
+
+#ifndef GL_MAP_STENCIL
+#define GL_MAP_STENCIL 3345
+#endif
+
+#ifndef GL_INDEX_SHIFT
+#define GL_INDEX_SHIFT 3346
+#endif
+
+#ifndef GL_INDEX_OFFSET
+#define GL_INDEX_OFFSET 3347
+#endif
+
+#ifndef GL_RED_SCALE
+#define GL_RED_SCALE 3348
+#endif
+
+#ifndef GL_RED_BIAS
+#define GL_RED_BIAS 3349
+#endif
+
+#ifndef GL_GREEN_SCALE
+#define GL_GREEN_SCALE 3352
+#endif
+
+#ifndef GL_GREEN_BIAS
+#define GL_GREEN_BIAS 3353
+#endif
+
+#ifndef GL_BLUE_SCALE
+#define GL_BLUE_SCALE 3354
+#endif
+
+#ifndef GL_BLUE_BIAS
+#define GL_BLUE_BIAS 3355
+#endif
+
+#ifndef GL_ALPHA_SCALE
+#define GL_ALPHA_SCALE 3356
+#endif
+
+#ifndef GL_ALPHA_BIAS
+#define GL_ALPHA_BIAS 3357
+#endif
+
+#ifndef GL_DEPTH_SCALE
+#define GL_DEPTH_SCALE 3358
+#endif
+
+#ifndef GL_DEPTH_BIAS
+#define GL_DEPTH_BIAS 3359
+#endif
+
+#ifndef GL_ZOOM_X
+#define GL_ZOOM_X 3350
+#endif
+
+#ifndef GL_ZOOM_Y
+#define GL_ZOOM_Y 3351
+#endif
+
+#ifndef GL_PIXEL_MAP_I_TO_I
+#define GL_PIXEL_MAP_I_TO_I 3184
+#endif
+
+#ifndef GL_PIXEL_MAP_S_TO_S
+#define GL_PIXEL_MAP_S_TO_S 3185
+#endif
+
+#ifndef GL_PIXEL_MAP_I_TO_R
+#define GL_PIXEL_MAP_I_TO_R 3186
+#endif
+
+#ifndef GL_PIXEL_MAP_I_TO_G
+#define GL_PIXEL_MAP_I_TO_G 3187
+#endif
+
+#ifndef GL_PIXEL_MAP_I_TO_B
+#define GL_PIXEL_MAP_I_TO_B 3188
+#endif
+
+#ifndef GL_PIXEL_MAP_I_TO_A
+#define GL_PIXEL_MAP_I_TO_A 3189
+#endif
+
+#ifndef GL_PIXEL_MAP_R_TO_R
+#define GL_PIXEL_MAP_R_TO_R 3190
+#endif
+
+#ifndef GL_PIXEL_MAP_G_TO_G
+#define GL_PIXEL_MAP_G_TO_G 3191
+#endif
+
+#ifndef GL_PIXEL_MAP_B_TO_B
+#define GL_PIXEL_MAP_B_TO_B 3192
+#endif
+
+#ifndef GL_PIXEL_MAP_A_TO_A
+#define GL_PIXEL_MAP_A_TO_A 3193
+#endif
+
+#ifndef GL_PIXEL_MAP_I_TO_I_SIZE
+#define GL_PIXEL_MAP_I_TO_I_SIZE 3248
+#endif
+
+#ifndef GL_PIXEL_MAP_S_TO_S_SIZE
+#define GL_PIXEL_MAP_S_TO_S_SIZE 3249
+#endif
+
+#ifndef GL_PIXEL_MAP_I_TO_R_SIZE
+#define GL_PIXEL_MAP_I_TO_R_SIZE 3250
+#endif
+
+#ifndef GL_PIXEL_MAP_I_TO_G_SIZE
+#define GL_PIXEL_MAP_I_TO_G_SIZE 3251
+#endif
+
+#ifndef GL_PIXEL_MAP_I_TO_B_SIZE
+#define GL_PIXEL_MAP_I_TO_B_SIZE 3252
+#endif
+
+#ifndef GL_PIXEL_MAP_I_TO_A_SIZE
+#define GL_PIXEL_MAP_I_TO_A_SIZE 3253
+#endif
+
+#ifndef GL_PIXEL_MAP_R_TO_R_SIZE
+#define GL_PIXEL_MAP_R_TO_R_SIZE 3254
+#endif
+
+#ifndef GL_PIXEL_MAP_G_TO_G_SIZE
+#define GL_PIXEL_MAP_G_TO_G_SIZE 3255
+#endif
+
+#ifndef GL_PIXEL_MAP_B_TO_B_SIZE
+#define GL_PIXEL_MAP_B_TO_B_SIZE 3256
+#endif
+
+#ifndef GL_PIXEL_MAP_A_TO_A_SIZE
+#define GL_PIXEL_MAP_A_TO_A_SIZE 3257
+#endif
+
+#ifndef GL_MAX_PIXEL_MAP_TABLE
+#define GL_MAX_PIXEL_MAP_TABLE 3380
+#endif
+
+#ifndef GL_GENERATE_MIPMAP_HINT
+#define GL_GENERATE_MIPMAP_HINT 33170
+#endif
+
+#ifndef GL_TEXTURE_COMPRESSION_HINT
+#define GL_TEXTURE_COMPRESSION_HINT 34031
+#endif
+
+#ifndef GL_SAMPLE_ALPHA_TO_COVERAGE
+#define GL_SAMPLE_ALPHA_TO_COVERAGE 32926
+#endif
+
+#ifndef GL_SAMPLE_ALPHA_TO_ONE
+#define GL_SAMPLE_ALPHA_TO_ONE 32927
+#endif
+
+#ifndef GL_SAMPLE_COVERAGE
+#define GL_SAMPLE_COVERAGE 32928
+#endif
+
+#ifndef GL_SAMPLE_BUFFERS
+#define GL_SAMPLE_BUFFERS 32936
+#endif
+
+#ifndef GL_SAMPLES
+#define GL_SAMPLES 32937
+#endif
+
+#ifndef GL_SAMPLE_COVERAGE_VALUE
+#define GL_SAMPLE_COVERAGE_VALUE 32938
+#endif
+
+#ifndef GL_SAMPLE_COVERAGE_INVERT
+#define GL_SAMPLE_COVERAGE_INVERT 32939
+#endif
+
+#ifndef GL_ACCUM_RED_BITS
+#define GL_ACCUM_RED_BITS 3416
+#endif
+
+#ifndef GL_ACCUM_GREEN_BITS
+#define GL_ACCUM_GREEN_BITS 3417
+#endif
+
+#ifndef GL_ACCUM_BLUE_BITS
+#define GL_ACCUM_BLUE_BITS 3418
+#endif
+
+#ifndef GL_ACCUM_ALPHA_BITS
+#define GL_ACCUM_ALPHA_BITS 3419
+#endif
+
+#ifndef GL_ACCUM
+#define GL_ACCUM 256
+#endif
+
+#ifndef GL_LOAD
+#define GL_LOAD 257
+#endif
+
+#ifndef GL_RETURN
+#define GL_RETURN 258
+#endif
+
+#ifndef GL_MULT
+#define GL_MULT 259
+#endif
+
+#ifndef GL_ADD
+#define GL_ADD 260
+#endif
+
 
 
 
@@ -1807,6 +2543,200 @@ void glFlush(void);
  */
 void glFinish(void);
 
+void glPointSize(GLfloat size);
+
+void glPointParameterf(GLenum pname, GLfloat param);
+
+void glPointParameteri(GLenum pname, GLint param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glPointParameterfv(GLenum pname, const GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glPointParameteriv(GLenum pname, const GLint *params);
+
+void glLineWidth(GLfloat width);
+
+void glLineStipple(GLint factor, GLushort pattern);
+
+void glPolygonOffset(GLfloat factor, GLfloat units);
+
+void glSampleCoverage(GLclampf value, GLboolean invert);
+
+/*
+ The 32 x 32 bitmap is unpacked with the GL_UNPACK_* modes of glPixelStore.
+
+ # Safety
+ `mask` is NULL or points to the values the command reads.
+ */
+void glPolygonStipple(const GLubyte *mask);
+
+/*
+ The 32 x 32 bitmap is packed with the GL_PACK_* modes of glPixelStore; other bits of the
+ bytes it covers are left as they are.
+
+ # Safety
+ `mask` is NULL or has room for the values the command writes.
+ */
+void glGetPolygonStipple(GLubyte *mask);
+
+/*
+ # Safety
+ `v1` is NULL or points to the values the command reads.
+ `v2` is NULL or points to the values the command reads.
+ */
+void glRectsv(const GLshort *v1, const GLshort *v2);
+
+/*
+ # Safety
+ `v1` is NULL or points to the values the command reads.
+ `v2` is NULL or points to the values the command reads.
+ */
+void glRectiv(const GLint *v1, const GLint *v2);
+
+/*
+ # Safety
+ `v1` is NULL or points to the values the command reads.
+ `v2` is NULL or points to the values the command reads.
+ */
+void glRectfv(const GLfloat *v1, const GLfloat *v2);
+
+/*
+ # Safety
+ `v1` is NULL or points to the values the command reads.
+ `v2` is NULL or points to the values the command reads.
+ */
+void glRectdv(const GLdouble *v1, const GLdouble *v2);
+
+void glFogf(GLenum pname, GLfloat param);
+
+void glFogi(GLenum pname, GLint param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glFogfv(GLenum pname, const GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glFogiv(GLenum pname, const GLint *params);
+
+void glHint(GLenum target, GLenum mode);
+
+void glScissor(GLint x, GLint y, GLsizei width, GLsizei height);
+
+void glAlphaFunc(GLenum func, GLclampf reference);
+
+void glStencilFunc(GLenum func, GLint reference, GLuint mask);
+
+void glStencilOp(GLenum fail, GLenum zfail, GLenum zpass);
+
+void glDepthFunc(GLenum func);
+
+void glBlendFunc(GLenum sfactor, GLenum dfactor);
+
+void glBlendFuncSeparate(GLenum sfactor_rgb,
+                         GLenum dfactor_rgb,
+                         GLenum sfactor_alpha,
+                         GLenum dfactor_alpha);
+
+void glBlendColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
+
+void glBlendEquation(GLenum mode);
+
+void glLogicOp(GLenum opcode);
+
+void glDrawBuffer(GLenum mode);
+
+void glIndexMask(GLuint mask);
+
+void glColorMask(GLboolean red, GLboolean green, GLboolean blue, GLboolean alpha);
+
+void glDepthMask(GLboolean flag);
+
+void glStencilMask(GLuint mask);
+
+/*
+ There is no framebuffer: the mask is checked and nothing else happens.
+ */
+void glClear(GLbitfield mask);
+
+void glClearColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
+
+void glClearIndex(GLfloat c);
+
+void glClearDepth(GLclampd depth);
+
+void glClearStencil(GLint s);
+
+void glClearAccum(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
+
+/*
+ There is no accumulation buffer: GL_INVALID_OPERATION for a valid operation.
+ */
+void glAccum(GLenum op, GLfloat value);
+
+void glPixelStoref(GLenum pname, GLfloat param);
+
+void glPixelStorei(GLenum pname, GLint param);
+
+void glPixelTransferf(GLenum pname, GLfloat param);
+
+void glPixelTransferi(GLenum pname, GLint param);
+
+/*
+ # Safety
+ `values` is NULL or points to the values the command reads.
+ */
+void glPixelMapfv(GLenum map, GLsizei mapsize, const GLfloat *values);
+
+/*
+ Color values map [0, 2^32 - 1] to [0, 1]; index values convert directly.
+
+ # Safety
+ `values` is NULL or points to the values the command reads.
+ */
+void glPixelMapuiv(GLenum map, GLsizei mapsize, const GLuint *values);
+
+/*
+ Color values map [0, 2^16 - 1] to [0, 1]; index values convert directly.
+
+ # Safety
+ `values` is NULL or points to the values the command reads.
+ */
+void glPixelMapusv(GLenum map, GLsizei mapsize, const GLushort *values);
+
+/*
+ # Safety
+ `values` is NULL or has room for the values the command writes.
+ */
+void glGetPixelMapfv(GLenum map, GLfloat *values);
+
+/*
+ # Safety
+ `values` is NULL or has room for the values the command writes.
+ */
+void glGetPixelMapuiv(GLenum map, GLuint *values);
+
+/*
+ # Safety
+ `values` is NULL or has room for the values the command writes.
+ */
+void glGetPixelMapusv(GLenum map, GLushort *values);
+
+void glPixelZoom(GLfloat xfactor, GLfloat yfactor);
+
+void glReadBuffer(GLenum mode);
+
 void glLightf(GLenum light, GLenum pname, GLfloat param);
 
 void glLighti(GLenum light, GLenum pname, GLint param);
@@ -2020,21 +2950,6 @@ void glCullFace(GLenum mode);
 
 void glPolygonMode(GLenum face, GLenum mode);
 
-void glPointSize(GLfloat size);
-
-void glLineWidth(GLfloat width);
-
-void glHint(GLenum target, GLenum mode);
-
-void glClearColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
-
-void glClearDepth(GLclampd depth);
-
-/*
- There is no framebuffer: the mask is checked and nothing else happens.
- */
-void glClear(GLbitfield mask);
-
 void glRectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2);
 
 void glRectd(GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2);
@@ -2042,18 +2957,6 @@ void glRectd(GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2);
 void glRecti(GLint x1, GLint y1, GLint x2, GLint y2);
 
 void glRects(GLshort x1, GLshort y1, GLshort x2, GLshort y2);
-
-/*
- # Safety
- `v1` and `v2` are NULL or point to 2 values each.
- */
-void glRectfv(const GLfloat *v1, const GLfloat *v2);
-
-/*
- # Safety
- `v1` and `v2` are NULL or point to 2 values each.
- */
-void glRectdv(const GLdouble *v1, const GLdouble *v2);
 
 void glRasterPos2s(GLshort x, GLshort y);
 

@@ -12,11 +12,21 @@ use crate::pipeline::block::InputBlock;
 use crate::pipeline::feedback::FeedbackBuffer;
 use crate::pipeline::vertex::{CurrentAttribs, DerivedState, VertexTransform};
 use crate::state::enables::Enables;
+use crate::state::fog::FogAttribs;
+use crate::state::fragment::{
+    AccumBufferAttribs, ColorBufferAttribs, DepthBufferAttribs, ScissorAttribs,
+    StencilBufferAttribs,
+};
+use crate::state::hints::HintAttribs;
 use crate::state::light::{Light, MAX_LIGHTS};
 use crate::state::light_model::LightModel;
 use crate::state::material::{ColorMaterial, Material};
 use crate::state::matrix::Matrices;
+use crate::state::pixel::{PixelMaps, PixelModeAttribs, PixelStoreAttribs};
 use crate::state::raster::RasterState;
+use crate::state::rasterization::{
+    LineAttribs, MultisampleAttribs, PointAttribs, PolygonAttribs, PolygonStippleAttribs,
+};
 
 /// glRenderMode's modes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -48,6 +58,25 @@ pub struct Context {
     pub(crate) current: CurrentAttribs,
     pub(crate) matrices: Matrices,
     pub(crate) raster: RasterState,
+    /// The state that does not change vertex processing, one attribute group each (the
+    /// groups of glPushAttrib: the struct holds the group's enables too).
+    pub(crate) point: PointAttribs,
+    pub(crate) line: LineAttribs,
+    pub(crate) polygon: PolygonAttribs,
+    pub(crate) polygon_stipple: PolygonStippleAttribs,
+    pub(crate) multisample: MultisampleAttribs,
+    pub(crate) fog: FogAttribs,
+    pub(crate) scissor: ScissorAttribs,
+    pub(crate) depth: DepthBufferAttribs,
+    pub(crate) stencil: StencilBufferAttribs,
+    pub(crate) color_buffer: ColorBufferAttribs,
+    pub(crate) accum: AccumBufferAttribs,
+    pub(crate) hints: HintAttribs,
+    pub(crate) pixel_mode: PixelModeAttribs,
+    /// Client state (GL_CLIENT_PIXEL_STORE_BIT).
+    pub(crate) pixel_store: PixelStoreAttribs,
+    /// In no attribute group.
+    pub(crate) pixel_maps: PixelMaps,
     pub(crate) raster_position: crate::commands::raster_pos::RasterPosition,
     pub(crate) render_mode: RenderMode,
     pub(crate) feedback: FeedbackBuffer,
@@ -81,6 +110,21 @@ impl Context {
             current: CurrentAttribs::default(),
             matrices: Matrices::default(),
             raster: RasterState::default(),
+            point: Default::default(),
+            line: Default::default(),
+            polygon: Default::default(),
+            polygon_stipple: Default::default(),
+            multisample: Default::default(),
+            fog: Default::default(),
+            scissor: Default::default(),
+            depth: Default::default(),
+            stencil: Default::default(),
+            color_buffer: Default::default(),
+            accum: Default::default(),
+            hints: Default::default(),
+            pixel_mode: Default::default(),
+            pixel_store: Default::default(),
+            pixel_maps: Default::default(),
             raster_position: Default::default(),
             render_mode: RenderMode::Render,
             feedback: FeedbackBuffer::default(),

@@ -913,6 +913,12 @@ c_programs!(
     select_overflow,
     select_errors,
     select_osmesa_diff,
+    state_depth_stencil_scissor,
+    state_color_buffer,
+    state_fog_hints,
+    state_points_lines_polygons,
+    state_pixels,
+    osmesa_diff_buffers_and_factors,
 );
 
 /// The line-reset rule accepts exactly fflight `line_reset` vs OSMesa `line`

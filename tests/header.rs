@@ -1,5 +1,7 @@
-//! The checked-in C header equals what build.rs generates now, and it compiles under the
-//! strictest flags alone and together with the system <GL/gl.h>, in either order.
+//! The checked-in C header and table-made entry points (src/capi/generated.rs) equal what
+//! build.rs generates now, and the header compiles under the strictest flags alone and
+//! together with the system <GL/gl.h>, in either order, and with <GL/glext.h>'s prototypes
+//! (so every declaration matches the system headers' types).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -16,6 +18,35 @@ fn checked_in_header_matches_the_generated_one() {
     assert!(
         generated == checked_in,
         "include/fflight.h is stale: run `make header` (FFLIGHT_BLESS=1 cargo build) and commit it"
+    );
+}
+
+#[test]
+fn checked_in_entry_points_match_the_table() {
+    let generated = include_str!(concat!(env!("OUT_DIR"), "/generated.rs"));
+    let checked_in = std::fs::read_to_string(manifest_dir().join("src/capi/generated.rs"))
+        .expect("src/capi/generated.rs exists");
+    assert!(
+        generated == checked_in,
+        "src/capi/generated.rs is stale: run `make header` (FFLIGHT_BLESS=1 cargo build) and \
+         commit it"
+    );
+}
+
+/// The header defines GL's names and its own guard only: a crate-internal `pub const` that
+/// cbindgen would export belongs in cbindgen.toml's `exclude`.
+#[test]
+fn header_defines_only_gl_names() {
+    let header = std::fs::read_to_string(manifest_dir().join("include/fflight.h")).unwrap();
+    let strays: Vec<&str> = header
+        .lines()
+        .filter_map(|l| l.strip_prefix("#define "))
+        .filter_map(|rest| rest.split_whitespace().next())
+        .filter(|name| !name.starts_with("GL_") && *name != "FFLIGHT_H")
+        .collect();
+    assert!(
+        strays.is_empty(),
+        "not GL names: {strays:?} (see cbindgen.toml's exclude)"
     );
 }
 
@@ -67,6 +98,20 @@ fn header_compiles_after_the_system_gl_header() {
     );
 }
 
+/// <GL/glext.h> declares the GL 1.4 and 1.5 functions only with GL_GLEXT_PROTOTYPES: a
+/// declaration of fflight.h whose types differ from the system header's is then an error.
+#[test]
+fn header_compiles_after_the_system_gl_and_glext_prototypes() {
+    compile(
+        "glext_first.c",
+        &format!(
+            "#define GL_GLEXT_PROTOTYPES 1\n#include <GL/gl.h>\n#include <GL/glext.h>\n\
+             #include \"fflight.h\"\n{BODY}"
+        ),
+        &[],
+    );
+}
+
 #[test]
 fn header_compiles_before_the_system_gl_header() {
     compile(
@@ -83,4 +128,73 @@ fn header_compiles_as_cpp() {
         &format!("#include \"fflight.h\"\n{BODY}"),
         &["-x", "c++", "-std=c++11"],
     );
+}
+
+/// The generator build.rs runs on src/capi/entry_points.txt.
+#[path = "../build/entry_points.rs"]
+mod entry_points;
+
+/// One line of each kind makes the function it describes: reads before the call, a written
+/// result through `write`, a filled slice through `read_mut`, docs and a safety section.
+#[test]
+fn the_entry_point_generator_writes_what_a_line_says() {
+    let table = "\
+use crate::state::fog::fog_param_count;
+/// Fog.
+void glFogfv(GLenum pname, const GLfloat *params[fog_param_count(pname).unwrap_or(0)]) => ctx.fog(pname, params)
+void glGetPixelMapfv(GLenum map, GLfloat *values[out]) => ctx.get_pixel_map(map)
+void glGetPolygonStipple(GLubyte *mask[ctx.polygon_stipple_pack_span()]) => ctx.get_polygon_stipple(mask)
+GLboolean glIsEnabled(GLenum cap) => ctx.is_enabled(cap).map(GLboolean::from)
+";
+    let code = entry_points::generate(table).expect("a valid table");
+    for expected in [
+        "use super::{read, read_mut, with_context, write};",
+        "use crate::state::fog::fog_param_count;",
+        "/// Fog.\n///\n/// # Safety\n/// `params` is NULL or points to the values the command reads.\n",
+        "pub unsafe extern \"C\" fn glFogfv(pname: GLenum, params: *const GLfloat) {",
+        "let params = unsafe { read(params, fog_param_count(pname).unwrap_or(0)) };\n        \
+         ctx.fog(pname, params)",
+        "pub unsafe extern \"C\" fn glGetPixelMapfv(map: GLenum, values: *mut GLfloat) {",
+        "let written = ctx.get_pixel_map(map)?;",
+        "unsafe { write(values, &written[..]) }",
+        "let mask = unsafe { read_mut(mask, ctx.polygon_stipple_pack_span()) };",
+        "pub extern \"C\" fn glIsEnabled(cap: GLenum) -> GLboolean {",
+    ] {
+        assert!(code.contains(expected), "missing:\n{expected}\nin:\n{code}");
+    }
+}
+
+/// A line the generator cannot read is an error naming it, never a guess.
+#[test]
+fn the_entry_point_generator_rejects_malformed_lines() {
+    for (line, message) in [
+        ("void glFoo(GLenum a)", "no `=>`"),
+        (
+            "void glFoo(const GLfloat *v) => ctx.foo(v)",
+            "needs `[count]`",
+        ),
+        (
+            "void glFoo(GLenum a[2]) => ctx.foo(a)",
+            "only a pointer takes brackets",
+        ),
+        (
+            "void glFoo(const GLfloat *v[out]) => ctx.foo(v)",
+            "not const",
+        ),
+        ("void glFoo(unsigned a) => ctx.foo(a)", "unknown C type"),
+        (
+            "void glFoo(GLfloat *a[out], GLfloat *b[out]) => ctx.foo()",
+            "more than one",
+        ),
+        (
+            "GLint glFoo(GLfloat *a[out]) => ctx.foo()",
+            "cannot also have",
+        ),
+    ] {
+        let error = entry_points::generate(line).expect_err(line);
+        assert!(
+            error.contains(message) && error.contains("line 1"),
+            "{line}: {error}"
+        );
+    }
 }

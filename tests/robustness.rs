@@ -5,8 +5,8 @@
 //! - Through `fflight::Context` directly, so a panic fails the test (the C layer would catch
 //!   it): a call whose arguments GL must reject returns `Err` (`Op::must_fail`, a conservative
 //!   oracle); after every call that returns `Err`, everything the queries report (every glGet
-//!   pname, every light and material parameter, clip planes, array pointers, the whole of each
-//!   matrix stack, capture and the feedback buffer, with the primitive in progress ended on a
+//!   pname, every light and material parameter, clip planes, array pointers, the polygon
+//!   stipple, the pixel maps, the whole of each matrix stack, capture and the feedback buffer, with the primitive in progress ended on a
 //!   copy, and in selection mode the name stack, shown by a hit made on a copy, and the hit
 //!   records) is what it was before; the error flag keeps the first error until read. Mode
 //!   and name-stack commands (§5.2, §5.3) must end exactly as GL says (GL_STACK_OVERFLOW at
@@ -16,13 +16,17 @@
 //!   colors stay in [0, 1] whatever the inputs (NaN and infinities included), and feedback
 //!   streams parse.
 //! - Through the C entry points: NULL pointers and wrong enums (glSelectBuffer with NULL or a
-//!   negative size, name-stack errors), inside and outside glBegin/glEnd, set an error and
-//!   change nothing; hit records written through glSelectBuffer's pointer are well formed.
+//!   negative size, name-stack errors; NULL for glFog*v, glPointParameter*v, glPolygonStipple,
+//!   glPixelMap* and glGetPixelMap*, negative sizes for glScissor and glPixelMap, wrong enums
+//!   for the per-fragment, fog, point and pixel commands), inside and outside glBegin/glEnd,
+//!   set an error and change nothing; hit records written through glSelectBuffer's pointer are well formed.
 //!
 //! Each sequence has a fixed seed (printed on failure with the call that failed and the calls
 //! before it), so a failure reproduces with `sequence(seed)`.
 
 mod common;
+#[path = "common/state_lists.rs"]
+mod state_lists;
 
 use std::ffi::c_void;
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -35,8 +39,10 @@ use fflight::current::with_current;
 use fflight::lighting::{FaceColors, LitVertex};
 use fflight::pipeline::vertex::ProcessedVertex;
 use fflight::state::arrays::ArrayKind;
+use fflight::state::pixel::StoreParam;
 use fflight::{Context, GlError, GlResult};
 use glam::{Vec3, Vec4};
+use state_lists::*;
 
 // ---- a small deterministic generator ----
 
@@ -307,7 +313,7 @@ const CLIENT_ARRAYS: [GLenum; 6] = [
 ];
 /// Every capability glEnable accepts: lighting, clip planes, culling, the rasterization
 /// capabilities fflight stores (values of <GL/gl.h>), and the client arrays.
-const CAPS: [GLenum; 56] = [
+const CAPS: [GLenum; 59] = [
     GL_LIGHTING,
     GL_LIGHT0,
     GL_LIGHT1,
@@ -355,6 +361,9 @@ const CAPS: [GLenum; 56] = [
     GL_TEXTURE_GEN_T,
     GL_TEXTURE_GEN_R,
     GL_TEXTURE_GEN_Q,
+    GL_SAMPLE_ALPHA_TO_COVERAGE,
+    GL_SAMPLE_ALPHA_TO_ONE,
+    GL_SAMPLE_COVERAGE,
     GL_VERTEX_ARRAY,
     GL_NORMAL_ARRAY,
     GL_COLOR_ARRAY,
@@ -367,8 +376,9 @@ const CAPS: [GLenum; 56] = [
     GL_MAX_LIGHTS,
 ];
 /// How many of `CAPS` are capabilities.
-const VALID_CAPS: usize = 53;
-/// Every glGet pname fflight answers, besides the capabilities.
+const VALID_CAPS: usize = 56;
+/// The glGet pnames of vertex processing, the older rasterization state and the buffer
+/// bindings; `get_pnames` adds those of tests/common/state_lists.rs.
 const GET_PNAMES: [GLenum; 82] = [
     GL_MAX_LIGHTS,
     GL_MAX_CLIP_PLANES,
@@ -472,7 +482,58 @@ const BUFFER_PNAMES: [GLenum; 4] = [
     GL_BUFFER_ACCESS,
     GL_BUFFER_MAPPED,
 ];
+/// Every glGet pname fflight answers, besides the capabilities.
+fn get_pnames() -> Vec<GLenum> {
+    GET_PNAMES.iter().copied().chain(state_pnames()).collect()
+}
 const MATRIX_MODES: [GLenum; 3] = [GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE];
+const COMPARISON_FUNCS: [GLenum; 8] = [
+    GL_NEVER,
+    GL_LESS,
+    GL_EQUAL,
+    GL_LEQUAL,
+    GL_GREATER,
+    GL_NOTEQUAL,
+    GL_GEQUAL,
+    GL_ALWAYS,
+];
+const STENCIL_OPS: [GLenum; 8] = [
+    GL_KEEP,
+    GL_ZERO,
+    GL_REPLACE,
+    GL_INCR,
+    GL_DECR,
+    GL_INVERT,
+    GL_INCR_WRAP,
+    GL_DECR_WRAP,
+];
+const BLEND_FACTORS: [GLenum; 15] = [
+    GL_ZERO,
+    GL_ONE,
+    GL_SRC_COLOR,
+    GL_ONE_MINUS_SRC_COLOR,
+    GL_DST_COLOR,
+    GL_ONE_MINUS_DST_COLOR,
+    GL_SRC_ALPHA,
+    GL_ONE_MINUS_SRC_ALPHA,
+    GL_DST_ALPHA,
+    GL_ONE_MINUS_DST_ALPHA,
+    GL_CONSTANT_COLOR,
+    GL_ONE_MINUS_CONSTANT_COLOR,
+    GL_CONSTANT_ALPHA,
+    GL_ONE_MINUS_CONSTANT_ALPHA,
+    GL_SRC_ALPHA_SATURATE,
+];
+const BLEND_EQUATIONS: [GLenum; 5] = [
+    GL_FUNC_ADD,
+    GL_FUNC_SUBTRACT,
+    GL_FUNC_REVERSE_SUBTRACT,
+    GL_MIN,
+    GL_MAX,
+];
+/// What glDrawBuffer and glReadBuffer accept without an error here (glReadBuffer takes no
+/// GL_NONE or GL_FRONT_AND_BACK; the others name buffers fflight's framebuffer lacks).
+const COLOR_BUFFERS: [GLenum; 5] = [GL_FRONT, GL_LEFT, GL_FRONT_LEFT, GL_NONE, GL_FRONT_AND_BACK];
 const PRIMITIVES: [GLenum; 10] = [
     GL_POINTS,
     GL_LINES,
@@ -504,12 +565,14 @@ const CLIP_PLANES: [GLenum; 6] = [
 const SHADE_MODELS: [GLenum; 2] = [GL_FLAT, GL_SMOOTH];
 const WINDINGS: [GLenum; 2] = [GL_CW, GL_CCW];
 const POLYGON_MODES: [GLenum; 3] = [GL_POINT, GL_LINE, GL_FILL];
-const HINT_TARGETS: [GLenum; 5] = [
+const HINT_TARGETS: [GLenum; 7] = [
     GL_PERSPECTIVE_CORRECTION_HINT,
     GL_POINT_SMOOTH_HINT,
     GL_LINE_SMOOTH_HINT,
     GL_POLYGON_SMOOTH_HINT,
     GL_FOG_HINT,
+    GL_GENERATE_MIPMAP_HINT,
+    GL_TEXTURE_COMPRESSION_HINT,
 ];
 const HINT_MODES: [GLenum; 3] = [GL_DONT_CARE, GL_FASTEST, GL_NICEST];
 const COMPONENT_TYPES: [GLenum; 8] = [
@@ -558,6 +621,165 @@ const ARRAY_KINDS: [ArrayKind; 5] = [
 ];
 
 // ---- the commands ----
+
+/// The commands of the state that does not change vertex processing (fragment, fog, point,
+/// pixel), with arguments valid or not.
+#[derive(Clone, Debug)]
+enum StateOp {
+    DepthFunc(GLenum),
+    StencilFunc(GLenum, i32, u32),
+    StencilOp([GLenum; 3]),
+    AlphaFunc(GLenum, f32),
+    BlendFuncSeparate([GLenum; 4]),
+    BlendEquation(GLenum),
+    LogicOp(GLenum),
+    Scissor([i32; 4]),
+    Fog(GLenum, Vec<f32>),
+    PointParameter(GLenum, Vec<f32>),
+    PixelStore(GLenum, i32),
+    PixelTransfer(GLenum, f32),
+    PixelMap(GLenum, i32, Vec<f32>),
+    PolygonStipple(Vec<u8>),
+    DrawBuffer(GLenum),
+    ReadBuffer(GLenum),
+}
+
+fn state_op(rng: &mut Rng, finite: bool) -> StateOp {
+    let logic_ops: Vec<GLenum> = (GL_CLEAR..=GL_SET).collect();
+    match rng.below(16) {
+        0 => StateOp::DepthFunc(rng.enumeration(&COMPARISON_FUNCS)),
+        1 => StateOp::StencilFunc(rng.enumeration(&COMPARISON_FUNCS), rng.int(), rng.any_u32()),
+        2 => StateOp::StencilOp(std::array::from_fn(|_| rng.enumeration(&STENCIL_OPS))),
+        3 => StateOp::AlphaFunc(rng.enumeration(&COMPARISON_FUNCS), rng.float(finite)),
+        4 => StateOp::BlendFuncSeparate(std::array::from_fn(|_| rng.enumeration(&BLEND_FACTORS))),
+        5 => StateOp::BlendEquation(rng.enumeration(&BLEND_EQUATIONS)),
+        6 => StateOp::LogicOp(rng.enumeration(&logic_ops)),
+        7 => StateOp::Scissor([rng.int(), rng.int(), rng.count(), rng.count()]),
+        8 => {
+            let pname = rng.enumeration(&FOG_PNAMES);
+            let mut params = rng.params(finite);
+            if pname == GL_FOG_MODE || pname == GL_FOG_COORD_SRC {
+                let modes = [GL_LINEAR, GL_EXP, GL_EXP2, GL_FOG_COORD, GL_FRAGMENT_DEPTH];
+                params
+                    .iter_mut()
+                    .for_each(|p| *p = rng.enumeration(&modes) as f32);
+            }
+            StateOp::Fog(pname, params)
+        }
+        9 => StateOp::PointParameter(rng.enumeration(&POINT_PNAMES), rng.params(finite)),
+        10 => StateOp::PixelStore(
+            rng.enumeration(&PIXEL_STORE_PNAMES),
+            rng.pick(&[0, 1, 2, 3, 4, 8, 16, -1, 33]),
+        ),
+        11 => StateOp::PixelTransfer(rng.enumeration(&PIXEL_TRANSFER_PNAMES), rng.float(finite)),
+        12 => {
+            let size = rng.pick(&[-1, 0, 1, 2, 3, 4, 16, 256, 257]);
+            let values = (0..rng.below(20)).map(|_| rng.float(finite)).collect();
+            StateOp::PixelMap(rng.enumeration(&PIXEL_MAPS), size, values)
+        }
+        13 => {
+            let length = rng.pick(&[0, 34, 128, 300]);
+            StateOp::PolygonStipple((0..length).map(|_| rng.next_u64() as u8).collect())
+        }
+        14 => StateOp::DrawBuffer(rng.enumeration(&COLOR_BUFFERS)),
+        _ => StateOp::ReadBuffer(rng.enumeration(&COLOR_BUFFERS)),
+    }
+}
+
+impl StateOp {
+    /// Whether GL must reject the call, from its arguments alone (conservatively for the
+    /// stipple, whose length depends on the unpack modes: at least 35 bytes, 31 rows of one
+    /// byte and four for the last).
+    fn must_fail(&self) -> bool {
+        let valid = |value: GLenum, set: &[GLenum]| set.contains(&value);
+        let negative = |v: f32| v < 0.0 || v.is_nan();
+        match *self {
+            StateOp::DepthFunc(func)
+            | StateOp::StencilFunc(func, ..)
+            | StateOp::AlphaFunc(func, _) => !valid(func, &COMPARISON_FUNCS),
+            StateOp::StencilOp(ops) => ops.iter().any(|&op| !valid(op, &STENCIL_OPS)),
+            StateOp::BlendFuncSeparate([src, dst, src_alpha, dst_alpha]) => {
+                // GL_SRC_ALPHA_SATURATE (the last) is for sources only.
+                let destinations = &BLEND_FACTORS[..BLEND_FACTORS.len() - 1];
+                !valid(src, &BLEND_FACTORS)
+                    || !valid(src_alpha, &BLEND_FACTORS)
+                    || !valid(dst, destinations)
+                    || !valid(dst_alpha, destinations)
+            }
+            StateOp::BlendEquation(mode) => !valid(mode, &BLEND_EQUATIONS),
+            StateOp::LogicOp(opcode) => !(GL_CLEAR..=GL_SET).contains(&opcode),
+            StateOp::Scissor([_, _, width, height]) => width < 0 || height < 0,
+            StateOp::Fog(pname, ref params) => {
+                let count = if pname == GL_FOG_COLOR { 4 } else { 1 };
+                let first = params.first().copied().unwrap_or(0.0);
+                let as_enum = first as i32 as GLenum;
+                !valid(pname, &FOG_PNAMES)
+                    || params.len() < count
+                    || (pname == GL_FOG_MODE && !valid(as_enum, &[GL_LINEAR, GL_EXP, GL_EXP2]))
+                    || (pname == GL_FOG_COORD_SRC
+                        && !valid(as_enum, &[GL_FOG_COORD, GL_FRAGMENT_DEPTH]))
+                    || (pname == GL_FOG_DENSITY && negative(first))
+            }
+            StateOp::PointParameter(pname, ref params) => {
+                let count = if pname == GL_POINT_DISTANCE_ATTENUATION {
+                    3
+                } else {
+                    1
+                };
+                !valid(pname, &POINT_PNAMES)
+                    || params.len() < count
+                    || (count == 1 && negative(params[0]))
+            }
+            StateOp::PixelStore(pname, value) => {
+                let alignment = matches!(pname, GL_PACK_ALIGNMENT | GL_UNPACK_ALIGNMENT);
+                let boolean = matches!(
+                    pname,
+                    GL_PACK_SWAP_BYTES
+                        | GL_UNPACK_SWAP_BYTES
+                        | GL_PACK_LSB_FIRST
+                        | GL_UNPACK_LSB_FIRST
+                );
+                !valid(pname, &PIXEL_STORE_PNAMES)
+                    || (alignment && !matches!(value, 1 | 2 | 4 | 8))
+                    || (!boolean && value < 0)
+            }
+            StateOp::PixelTransfer(pname, _) => !valid(pname, &PIXEL_TRANSFER_PNAMES),
+            StateOp::PixelMap(map, size, ref values) => {
+                let indexed_by_index = (GL_PIXEL_MAP_I_TO_I..=GL_PIXEL_MAP_I_TO_A).contains(&map);
+                !(1..=256).contains(&size)
+                    || (indexed_by_index && !(size as u32).is_power_of_two())
+                    || !valid(map, &PIXEL_MAPS)
+                    || values.len() < size as usize
+            }
+            StateOp::PolygonStipple(ref bytes) => bytes.len() < 35,
+            StateOp::DrawBuffer(mode) => !valid(mode, &COLOR_BUFFERS),
+            StateOp::ReadBuffer(mode) => !valid(mode, &COLOR_BUFFERS[..3]),
+        }
+    }
+
+    fn apply(&self, ctx: &mut Context) -> GlResult {
+        match *self {
+            StateOp::DepthFunc(func) => ctx.depth_func(func),
+            StateOp::StencilFunc(func, reference, mask) => ctx.stencil_func(func, reference, mask),
+            StateOp::StencilOp([fail, depth_fail, depth_pass]) => {
+                ctx.stencil_op(fail, depth_fail, depth_pass)
+            }
+            StateOp::AlphaFunc(func, reference) => ctx.alpha_func(func, reference),
+            StateOp::BlendFuncSeparate([a, b, c, d]) => ctx.blend_func_separate(a, b, c, d),
+            StateOp::BlendEquation(mode) => ctx.blend_equation(mode),
+            StateOp::LogicOp(opcode) => ctx.logic_op(opcode),
+            StateOp::Scissor([x, y, width, height]) => ctx.scissor(x, y, width, height),
+            StateOp::Fog(pname, ref params) => ctx.fog(pname, params),
+            StateOp::PointParameter(pname, ref params) => ctx.point_parameter(pname, params),
+            StateOp::PixelStore(pname, value) => ctx.pixel_store(pname, StoreParam::Int(value)),
+            StateOp::PixelTransfer(pname, value) => ctx.pixel_transfer(pname, value),
+            StateOp::PixelMap(map, size, ref values) => ctx.pixel_map(map, size, values),
+            StateOp::PolygonStipple(ref bytes) => ctx.polygon_stipple(bytes),
+            StateOp::DrawBuffer(mode) => ctx.draw_buffer(mode),
+            StateOp::ReadBuffer(mode) => ctx.read_buffer(mode),
+        }
+    }
+}
 
 /// Where the `ArraySources` of a Rust draw start: at the draw's lowest index, as the C layer
 /// builds them, at element 0, or past the lowest index (a caller's mistake).
@@ -697,6 +919,8 @@ enum Op {
     ClearColor(Vec4),
     ClearDepth(f64),
     Clear(u32),
+    /// A command of the state that does not change vertex processing.
+    State(StateOp),
     Finish,
     Pointer {
         kind: ArrayKind,
@@ -982,7 +1206,7 @@ impl Op {
                     || colors.as_ref().is_some_and(|v| v.len() < n)
                     || out < n
             }
-            Op::Get(pname) => !valid(pname, &GET_PNAMES) && !valid(pname, &CAPS[..VALID_CAPS]),
+            Op::Get(pname) => !valid(pname, &get_pnames()) && !valid(pname, &CAPS[..VALID_CAPS]),
             Op::GetLight { light, pname, .. } => {
                 !valid(light, &LIGHTS) || !valid(pname, &LIGHT_PNAMES)
             }
@@ -1013,6 +1237,7 @@ impl Op {
             Op::GetBufferParameter { target, pname } => {
                 !valid(target, &BUFFER_TARGETS) || !valid(pname, &BUFFER_PNAMES)
             }
+            Op::State(ref command) => command.must_fail(),
             _ => false,
         }
     }
@@ -1128,7 +1353,7 @@ fn buffer_op(rng: &mut Rng) -> Op {
 /// Any command, arguments half valid, half not.
 fn any_op(rng: &mut Rng, finite: bool) -> Op {
     let f = finite;
-    match rng.below(92) {
+    match rng.below(100) {
         0..=2 => Op::Light {
             light: rng.enumeration(&LIGHTS),
             pname: rng.enumeration(&LIGHT_PNAMES),
@@ -1290,7 +1515,8 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
         70 => Op::CaptureBegin,
         71 => Op::CaptureEnd,
         72 => {
-            let pnames: &[GLenum] = if rng.coin() { &GET_PNAMES } else { &CAPS };
+            let get_pnames = get_pnames();
+            let pnames: &[GLenum] = if rng.coin() { &get_pnames } else { &CAPS };
             Op::Get(rng.enumeration(pnames))
         }
         73 => Op::GetLight {
@@ -1313,6 +1539,7 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
         80 => select_buffer(rng),
         81 => Op::RenderMode(GL_SELECT),
         88..=91 => buffer_op(rng),
+        92..=99 => Op::State(state_op(rng, finite)),
         _ => name_op(rng),
     }
 }
@@ -1603,6 +1830,7 @@ fn apply(
         Op::ClearColor(c) => ctx.clear_color(*c),
         Op::ClearDepth(d) => ctx.clear_depth(*d),
         Op::Clear(mask) => ctx.clear(*mask),
+        Op::State(command) => command.apply(ctx),
         Op::Finish => ctx.finish(),
         Op::Pointer {
             kind,
@@ -1929,6 +2157,8 @@ enum Key {
     NameStack,
     MatrixStack(GLenum, usize),
     Buffer(GLenum),
+    PolygonStipple,
+    PixelMap(GLenum),
 }
 
 /// Everything the public queries report about a context, as bits (NaN equals itself, 0 and
@@ -1973,7 +2203,7 @@ impl Snapshot {
         if c.inside_begin_end() {
             c.end().expect("glEnd ends the primitive in progress");
         }
-        for &pname in CAPS[..VALID_CAPS].iter().chain(&GET_PNAMES) {
+        for &pname in CAPS[..VALID_CAPS].iter().chain(&get_pnames()) {
             let values = s.start(Key::Get(pname));
             match c.get(pname) {
                 Ok(StateValue::Bools(v)) => values.extend(v.iter().map(|&b| 0x100 | b as u64)),
@@ -2017,6 +2247,17 @@ impl Snapshot {
             if let Ok(bytes) = c.get_buffer_sub_data(target, 0, size as isize) {
                 values.extend(bytes.iter().map(|&b| b as u64));
             }
+        }
+        // The stipple packed with the current modes into a buffer that starts as 0xAA.
+        let mut stipple = vec![0xAA_u8; c.polygon_stipple_pack_span()];
+        c.get_polygon_stipple(&mut stipple).expect("the stipple");
+        s.push(Key::PolygonStipple, stipple.iter().map(|&b| b as u64));
+        for map in PIXEL_MAPS {
+            let values = c.get_pixel_map(map).expect("a pixel map");
+            s.push(
+                Key::PixelMap(map),
+                values.iter().map(|v| v.to_bits() as u64),
+            );
         }
         // Capture only grows (or restarts): its counts and last entries show any change.
         let capture = c.captured();
@@ -2484,8 +2725,39 @@ unsafe extern "C" {
     fn glCullFace(mode: GLenum);
     fn glPolygonMode(face: GLenum, mode: GLenum);
     fn glHint(target: GLenum, mode: GLenum);
+    fn glFogfv(pname: GLenum, params: *const GLfloat);
+    fn glFogiv(pname: GLenum, params: *const GLint);
+    safe fn glFogf(pname: GLenum, param: GLfloat);
+    fn glPointParameterfv(pname: GLenum, params: *const GLfloat);
+    fn glPointParameteriv(pname: GLenum, params: *const GLint);
+    safe fn glPointParameterf(pname: GLenum, param: GLfloat);
+    fn glPolygonStipple(mask: *const GLubyte);
+    fn glGetPolygonStipple(mask: *mut GLubyte);
+    fn glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat);
+    fn glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint);
+    fn glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort);
+    fn glGetPixelMapfv(map: GLenum, values: *mut GLfloat);
+    fn glGetPixelMapuiv(map: GLenum, values: *mut GLuint);
+    fn glGetPixelMapusv(map: GLenum, values: *mut GLushort);
+    safe fn glScissor(x: GLint, y: GLint, width: GLsizei, height: GLsizei);
+    safe fn glPointSize(size: GLfloat);
+    safe fn glLineWidth(width: GLfloat);
+    safe fn glPixelStorei(pname: GLenum, param: GLint);
+    safe fn glPixelTransferf(pname: GLenum, param: GLfloat);
+    safe fn glDepthFunc(func: GLenum);
+    safe fn glStencilFunc(func: GLenum, reference: GLint, mask: GLuint);
+    safe fn glAlphaFunc(func: GLenum, reference: GLclampf);
+    safe fn glStencilOp(fail: GLenum, zfail: GLenum, zpass: GLenum);
+    safe fn glBlendFunc(sfactor: GLenum, dfactor: GLenum);
+    safe fn glBlendEquation(mode: GLenum);
+    safe fn glLogicOp(opcode: GLenum);
+    safe fn glDrawBuffer(mode: GLenum);
+    safe fn glReadBuffer(mode: GLenum);
+    safe fn glAccum(op: GLenum, value: GLfloat);
     fn glRectfv(v1: *const GLfloat, v2: *const GLfloat);
     fn glRectdv(v1: *const GLdouble, v2: *const GLdouble);
+    fn glRectiv(v1: *const GLint, v2: *const GLint);
+    fn glRectsv(v1: *const GLshort, v2: *const GLshort);
     fn glVertex2fv(v: *const GLfloat);
     fn glVertex4fv(v: *const GLfloat);
     fn glVertex2sv(v: *const GLshort);
@@ -2556,13 +2828,15 @@ unsafe fn bad_call(rng: &mut Rng) -> String {
     let face = rng.enumeration(&FACES);
     let material_pname = rng.enumeration(&MATERIAL_PNAMES);
     let model_pname = rng.enumeration(&LIGHT_MODEL_PNAMES);
-    let pname = rng.enumeration(&GET_PNAMES);
+    let pname = rng.enumeration(&get_pnames());
     let plane = rng.enumeration(&CLIP_PLANES);
     let mode = rng.enumeration(&PRIMITIVES);
     let count = 1 + rng.below(8) as i32;
     let floats = [0.5f32; 4];
     let doubles = [0.5f64; 4];
-    let call = rng.below(54);
+    let call = rng.below(64);
+    let pixel_map = rng.enumeration(&PIXEL_MAPS);
+    let mut out = [0.0f32; 4];
     // SAFETY: NULL pointers, or pointers to local arrays of 4 values, enough for every call.
     unsafe {
         match call {
@@ -2612,9 +2886,11 @@ unsafe fn bad_call(rng: &mut Rng) -> String {
             },
             30 => glVertex4iv(null()),
             31 => glEdgeFlagv(null()),
-            32 => match rng.coin() {
-                true => glRectfv(null(), floats.as_ptr()),
-                false => glRectdv(doubles.as_ptr(), null()),
+            32 => match rng.below(4) {
+                0 => glRectfv(null(), floats.as_ptr()),
+                1 => glRectdv(doubles.as_ptr(), null()),
+                2 => glRectiv(null(), null()),
+                _ => glRectsv([1i16, 2].as_ptr(), null()),
             },
             33 => glFeedbackBuffer(count, rng.enumeration(&FEEDBACK_TYPES), null_mut()),
             34 => glGetPointerv(rng.enumeration(&POINTER_PNAMES), null_mut()),
@@ -2702,6 +2978,76 @@ unsafe fn bad_call(rng: &mut Rng) -> String {
                 };
                 glSelectBuffer(rng.pick(&[-1, -4, i32::MIN]), buffer);
             }
+            // The state that does not change vertex processing: NULL pointers...
+            54 => match rng.coin() {
+                true => glFogfv(rng.enumeration(&FOG_PNAMES), null()),
+                false => glFogiv(rng.enumeration(&FOG_PNAMES), null()),
+            },
+            55 => match rng.coin() {
+                true => glPointParameterfv(rng.enumeration(&POINT_PNAMES), null()),
+                false => glPointParameteriv(rng.enumeration(&POINT_PNAMES), null()),
+            },
+            56 => match rng.coin() {
+                true => glPolygonStipple(null()),
+                false => glGetPolygonStipple(null_mut()),
+            },
+            57 => match rng.below(3) {
+                0 => glPixelMapfv(pixel_map, 1 << rng.below(4), null()),
+                1 => glPixelMapuiv(pixel_map, 1 << rng.below(4), null()),
+                _ => glPixelMapusv(pixel_map, 1 << rng.below(4), null()),
+            },
+            58 => match rng.below(3) {
+                0 => glGetPixelMapfv(pixel_map, null_mut()),
+                1 => glGetPixelMapuiv(pixel_map, null_mut()),
+                _ => glGetPixelMapusv(pixel_map, null_mut()),
+            },
+            // ... negative sizes and bad values ...
+            59 => match rng.below(3) {
+                0 => glPixelMapfv(
+                    pixel_map,
+                    rng.pick(&[0, -1, 257, i32::MIN]),
+                    floats.as_ptr(),
+                ),
+                1 => glScissor(0, 0, rng.pick(&[-1, i32::MIN]), count),
+                _ => glScissor(0, 0, count, rng.pick(&[-1, i32::MIN])),
+            },
+            60 => match rng.below(4) {
+                0 => glPointSize(rng.pick(&[0.0, -1.0, f32::NAN])),
+                1 => glLineWidth(rng.pick(&[0.0, -1.0, f32::NAN])),
+                2 => glPixelStorei(
+                    rng.pick(&[GL_PACK_ALIGNMENT, GL_UNPACK_ALIGNMENT]),
+                    rng.pick(&[0, 3, 16, -4]),
+                ),
+                _ => glFogf(GL_FOG_DENSITY, rng.pick(&[-1.0, f32::NAN])),
+            },
+            // ... and wrong enums.
+            61 => match rng.below(7) {
+                0 => glDepthFunc(rng.invalid_enum(&COMPARISON_FUNCS)),
+                1 => glStencilFunc(rng.invalid_enum(&COMPARISON_FUNCS), 1, 1),
+                2 => glAlphaFunc(rng.invalid_enum(&COMPARISON_FUNCS), 0.5),
+                3 => glStencilOp(GL_KEEP, rng.invalid_enum(&STENCIL_OPS), GL_KEEP),
+                4 => glBlendFunc(rng.invalid_enum(&BLEND_FACTORS), GL_ZERO),
+                5 => glBlendEquation(rng.invalid_enum(&BLEND_EQUATIONS)),
+                _ => glLogicOp(rng.invalid_enum(&(GL_CLEAR..=GL_SET).collect::<Vec<_>>())),
+            },
+            62 => match rng.below(6) {
+                0 => glPixelStorei(rng.invalid_enum(&PIXEL_STORE_PNAMES), 1),
+                1 => glPixelTransferf(rng.invalid_enum(&PIXEL_TRANSFER_PNAMES), 1.0),
+                2 => glFogf(rng.invalid_enum(&FOG_PNAMES), 1.0),
+                3 => glPointParameterf(rng.invalid_enum(&POINT_PNAMES), 1.0),
+                4 => glDrawBuffer(rng.invalid_enum(&COLOR_BUFFERS)),
+                _ => glReadBuffer(rng.invalid_enum(&COLOR_BUFFERS[..3])),
+            },
+            63 => match rng.below(4) {
+                // Without an accumulation buffer every glAccum is an error.
+                3 => glAccum(
+                    rng.enumeration(&[GL_ACCUM, GL_LOAD, GL_RETURN, GL_MULT, GL_ADD]),
+                    0.5,
+                ),
+                0 => glHint(rng.invalid_enum(&HINT_TARGETS), GL_NICEST),
+                1 => glPixelMapfv(rng.invalid_enum(&PIXEL_MAPS), 2, floats.as_ptr()),
+                _ => glGetPixelMapfv(rng.invalid_enum(&PIXEL_MAPS), out.as_mut_ptr()),
+            },
             _ => glVertexPointer(4, rng.invalid_enum(&COMPONENT_TYPES[2..]), 0, null()),
         }
     }

@@ -11,6 +11,8 @@ mod buffers;
 mod capture;
 mod context;
 mod feedback;
+#[rustfmt::skip]
+mod generated;
 mod lighting;
 mod matrix;
 mod query;
@@ -51,6 +53,20 @@ pub(crate) unsafe fn read<'a, T>(ptr: *const T, count: usize) -> &'a [T] {
     } else {
         // SAFETY: the caller guarantees `count` readable values at a non-NULL `ptr`.
         unsafe { std::slice::from_raw_parts(ptr, count) }
+    }
+}
+
+/// `count` values at `ptr` for the command to write into, or an empty slice for NULL (the
+/// command then reports GL_INVALID_VALUE).
+///
+/// # Safety
+/// A non-NULL `ptr` must point to at least `count` writable values.
+pub(crate) unsafe fn read_mut<'a, T>(ptr: *mut T, count: usize) -> &'a mut [T] {
+    if ptr.is_null() {
+        &mut []
+    } else {
+        // SAFETY: the caller guarantees `count` writable values at a non-NULL `ptr`.
+        unsafe { std::slice::from_raw_parts_mut(ptr, count) }
     }
 }
 

@@ -1,4 +1,4 @@
-//! glClipPlane, glGetClipPlane, glShadeModel, glFrontFace, glCullFace, glPolygonMode.
+//! glClipPlane, glGetClipPlane, glShadeModel, glFrontFace, glCullFace, glPolygonMode, glRect.
 
 use super::{read, with_context, write};
 use crate::error::GlError;
@@ -48,37 +48,6 @@ pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
 }
 
 #[unsafe(no_mangle)]
-pub extern "C" fn glPointSize(size: GLfloat) {
-    with_context(|ctx| ctx.point_size(size))
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glLineWidth(width: GLfloat) {
-    with_context(|ctx| ctx.line_width(width))
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glHint(target: GLenum, mode: GLenum) {
-    with_context(|ctx| ctx.hint(target, mode))
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) {
-    with_context(|ctx| ctx.clear_color(glam::Vec4::new(red, green, blue, alpha)))
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glClearDepth(depth: GLclampd) {
-    with_context(|ctx| ctx.clear_depth(depth))
-}
-
-/// There is no framebuffer: the mask is checked and nothing else happens.
-#[unsafe(no_mangle)]
-pub extern "C" fn glClear(mask: GLbitfield) {
-    with_context(|ctx| ctx.clear(mask))
-}
-
-#[unsafe(no_mangle)]
 pub extern "C" fn glRectf(x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) {
     with_context(|ctx| ctx.rect(x1, y1, x2, y2))
 }
@@ -96,28 +65,4 @@ pub extern "C" fn glRecti(x1: GLint, y1: GLint, x2: GLint, y2: GLint) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glRects(x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort) {
     with_context(|ctx| ctx.rect(x1.into(), y1.into(), x2.into(), y2.into()))
-}
-
-/// # Safety
-/// `v1` and `v2` are NULL or point to 2 values each.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn glRectfv(v1: *const GLfloat, v2: *const GLfloat) {
-    // SAFETY: forwarded from the caller.
-    let (v1, v2) = unsafe { (read(v1, 2), read(v2, 2)) };
-    with_context(|ctx| match (v1, v2) {
-        ([x1, y1], [x2, y2]) => ctx.rect(*x1, *y1, *x2, *y2),
-        _ => Err(GlError::InvalidValue),
-    })
-}
-
-/// # Safety
-/// `v1` and `v2` are NULL or point to 2 values each.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn glRectdv(v1: *const GLdouble, v2: *const GLdouble) {
-    // SAFETY: forwarded from the caller.
-    let (v1, v2) = unsafe { (read(v1, 2), read(v2, 2)) };
-    with_context(|ctx| match (v1, v2) {
-        ([x1, y1], [x2, y2]) => ctx.rect(*x1 as f32, *y1 as f32, *x2 as f32, *y2 as f32),
-        _ => Err(GlError::InvalidValue),
-    })
 }

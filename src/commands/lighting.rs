@@ -219,6 +219,11 @@ impl Context {
             // Client-state arrays, which Mesa accepts here as glEnableClientState.
             return self.client_state(cap, enabled);
         }
+        if let Some(flag) = self.group_flag_mut(cap) {
+            // Rasterization and per-fragment state: nothing derived depends on it.
+            *flag = enabled;
+            return Ok(());
+        }
         match Capability::of(cap)? {
             Capability::Lighting => self.enables.lighting = enabled,
             Capability::Light(i) => self.lights[i].enabled = enabled,
@@ -240,6 +245,9 @@ impl Context {
     pub fn is_enabled(&self, cap: GLenum) -> GlResult<bool> {
         self.outside_begin_end()?;
         if let Some(enabled) = self.arrays.is_enabled(cap) {
+            return Ok(enabled);
+        }
+        if let Some(enabled) = self.group_flag(cap) {
             return Ok(enabled);
         }
         Ok(match Capability::of(cap)? {

@@ -58,19 +58,19 @@ impl StateValue {
     }
 }
 
-fn floats(values: &[f32]) -> StateValue {
+pub(crate) fn floats(values: &[f32]) -> StateValue {
     StateValue::Floats(values.iter().map(|&v| v as f64).collect())
 }
 
-fn normalized(values: &[f32]) -> StateValue {
+pub(crate) fn normalized(values: &[f32]) -> StateValue {
     StateValue::Normalized(values.iter().map(|&v| v as f64).collect())
 }
 
-fn int(value: i32) -> StateValue {
+pub(crate) fn int(value: i32) -> StateValue {
     StateValue::Ints(vec![value])
 }
 
-fn enumeration(value: GLenum) -> StateValue {
+pub(crate) fn enumeration(value: GLenum) -> StateValue {
     StateValue::Ints(vec![value as i32])
 }
 
@@ -78,7 +78,7 @@ impl Context {
     /// The value of `pname` for glGet*v.
     pub fn get(&self, pname: GLenum) -> GlResult<StateValue> {
         self.outside_begin_end()?;
-        if Capability::of(pname).is_ok() {
+        if self.group_flag(pname).is_some() || Capability::of(pname).is_ok() {
             return Ok(StateValue::Bools(vec![self.is_enabled(pname)?]));
         }
         let m = &self.matrices;
@@ -128,23 +128,6 @@ impl Context {
             GL_POLYGON_MODE => {
                 StateValue::Ints(self.raster.polygon_mode.iter().map(|&m| m as i32).collect())
             }
-            GL_POINT_SIZE => floats(&[self.raster.point_size]),
-            GL_LINE_WIDTH => floats(&[self.raster.line_width]),
-            // Points and lines are not rasterized: any size is as good as any other.
-            GL_POINT_SIZE_RANGE | GL_LINE_WIDTH_RANGE => floats(&[1.0, 1024.0]),
-            GL_COLOR_CLEAR_VALUE => normalized(&self.raster.clear_color.to_array()),
-            GL_DEPTH_CLEAR_VALUE => StateValue::Normalized(vec![self.raster.clear_depth]),
-            GL_PERSPECTIVE_CORRECTION_HINT
-            | GL_POINT_SMOOTH_HINT
-            | GL_LINE_SMOOTH_HINT
-            | GL_POLYGON_SMOOTH_HINT
-            | GL_FOG_HINT => enumeration(
-                self.raster
-                    .hints
-                    .iter()
-                    .find(|(t, _)| *t == pname)
-                    .map_or(GL_DONT_CARE, |h| h.1),
-            ),
             GL_RENDER_MODE => enumeration(match self.render_mode {
                 RenderMode::Render => GL_RENDER,
                 RenderMode::Feedback => GL_FEEDBACK,
@@ -190,7 +173,13 @@ impl Context {
             GL_EDGE_FLAG_ARRAY_BUFFER_BINDING => {
                 int(self.arrays.get(ArrayKind::EdgeFlag).buffer as i32)
             }
-            _ => return Err(GlError::InvalidEnum),
+            _ => {
+                return self
+                    .get_fragment_state(pname)
+                    .or_else(|| self.get_rasterization_state(pname))
+                    .or_else(|| self.get_pixel_state(pname))
+                    .ok_or(GlError::InvalidEnum);
+            }
         })
     }
 

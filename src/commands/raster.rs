@@ -79,60 +79,16 @@ impl Context {
         Ok(())
     }
 
-    /// glPointSize: stored for queries (feedback reports no point size).
-    pub fn point_size(&mut self, size: f32) -> GlResult {
-        self.outside_begin_end()?;
-        if size.is_nan() || size <= 0.0 {
-            return Err(GlError::InvalidValue);
+    /// glRect{s,i,f,d}v: two corners of two values each; fewer values (a NULL pointer) is
+    /// GL_INVALID_VALUE.
+    pub fn rect_v<T: Copy + Into<f64>>(&mut self, v1: &[T], v2: &[T]) -> GlResult {
+        match (v1, v2) {
+            ([x1, y1, ..], [x2, y2, ..]) => {
+                let [x1, y1, x2, y2] = [*x1, *y1, *x2, *y2].map(|v| v.into() as f32);
+                self.rect(x1, y1, x2, y2)
+            }
+            _ => Err(GlError::InvalidValue),
         }
-        self.raster.point_size = size;
-        Ok(())
-    }
-
-    /// glLineWidth: stored for queries.
-    pub fn line_width(&mut self, width: f32) -> GlResult {
-        self.outside_begin_end()?;
-        if width.is_nan() || width <= 0.0 {
-            return Err(GlError::InvalidValue);
-        }
-        self.raster.line_width = width;
-        Ok(())
-    }
-
-    /// glHint: stored for queries.
-    pub fn hint(&mut self, target: GLenum, mode: GLenum) -> GlResult {
-        self.outside_begin_end()?;
-        if !matches!(mode, GL_DONT_CARE | GL_FASTEST | GL_NICEST) {
-            return Err(GlError::InvalidEnum);
-        }
-        let hint = self.raster.hints.iter_mut().find(|(t, _)| *t == target);
-        hint.ok_or(GlError::InvalidEnum)?.1 = mode;
-        Ok(())
-    }
-
-    /// glClearColor: clamped to [0, 1] and stored.
-    pub fn clear_color(&mut self, color: Vec4) -> GlResult {
-        self.outside_begin_end()?;
-        self.raster.clear_color = crate::lighting::clamp01(color);
-        Ok(())
-    }
-
-    /// glClearDepth: clamped to [0, 1] and stored.
-    pub fn clear_depth(&mut self, depth: f64) -> GlResult {
-        self.outside_begin_end()?;
-        self.raster.clear_depth = depth.clamp(0.0, 1.0);
-        Ok(())
-    }
-
-    /// glClear: fflight has no framebuffer, so only the mask is checked.
-    pub fn clear(&mut self, mask: GLbitfield) -> GlResult {
-        self.outside_begin_end()?;
-        let buffers =
-            GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
-        if mask & !buffers != 0 {
-            return Err(GlError::InvalidValue);
-        }
-        Ok(())
     }
 
     /// glRect (§2.9): a GL_POLYGON of the four corners at z = 0, counterclockwise.

@@ -6,29 +6,11 @@ use crate::gl::*;
 /// GL_MAX_CLIP_PLANES.
 pub const MAX_CLIP_PLANES: usize = 6;
 
-/// GL 1.5 capabilities fflight accepts and reports but that do not affect vertex processing
-/// (rasterization and per-fragment state): glEnable stores them so glIsEnabled answers.
+/// GL 1.5 capabilities fflight accepts and reports but whose state it does not implement yet
+/// (evaluators, texturing): glEnable stores them so glIsEnabled answers. The rasterization and
+/// per-fragment capabilities live in their attribute groups (see `Context::group_flag`).
 const OTHER_CAPABILITIES: &[GLenum] = &[
-    GL_ALPHA_TEST,
     GL_AUTO_NORMAL,
-    GL_BLEND,
-    GL_COLOR_LOGIC_OP,
-    GL_COLOR_SUM,
-    GL_DEPTH_TEST,
-    GL_DITHER,
-    GL_FOG,
-    GL_INDEX_LOGIC_OP,
-    GL_LINE_SMOOTH,
-    GL_LINE_STIPPLE,
-    GL_MULTISAMPLE,
-    GL_POINT_SMOOTH,
-    GL_POLYGON_OFFSET_FILL,
-    GL_POLYGON_OFFSET_LINE,
-    GL_POLYGON_OFFSET_POINT,
-    GL_POLYGON_SMOOTH,
-    GL_POLYGON_STIPPLE,
-    GL_SCISSOR_TEST,
-    GL_STENCIL_TEST,
     GL_TEXTURE_1D,
     GL_TEXTURE_2D,
     GL_TEXTURE_3D,
@@ -47,7 +29,7 @@ pub struct Enables {
     pub rescale_normal: bool,
     pub cull_face: bool,
     pub clip_planes: [bool; MAX_CLIP_PLANES],
-    /// OTHER_CAPABILITIES that are enabled (GL_DITHER starts enabled, see `Enables::initial`).
+    /// OTHER_CAPABILITIES that are enabled (all start disabled).
     other: Vec<GLenum>,
 }
 
@@ -85,7 +67,7 @@ impl Capability {
 impl Enables {
     pub fn initial() -> Enables {
         Enables {
-            other: vec![GL_DITHER], // enabled initially (§4.1.6)
+            other: Vec::new(),
             ..Enables::default()
         }
     }

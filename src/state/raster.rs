@@ -19,13 +19,6 @@ pub struct RasterState {
     pub cull_face_mode: GLenum,
     /// Front and back polygon modes.
     pub polygon_mode: [GLenum; 2],
-    /// Rasterization and framebuffer state: stored and queried, there is no rasterizer.
-    pub point_size: f32,
-    pub line_width: f32,
-    pub clear_color: Vec4,
-    pub clear_depth: f64,
-    /// glHint's targets and their modes.
-    pub hints: [(GLenum, GLenum); 5],
 }
 
 impl Default for RasterState {
@@ -38,18 +31,6 @@ impl Default for RasterState {
             front_face: GL_CCW,
             cull_face_mode: GL_BACK,
             polygon_mode: [GL_FILL, GL_FILL],
-            point_size: 1.0,
-            line_width: 1.0,
-            clear_color: Vec4::ZERO,
-            clear_depth: 1.0,
-            hints: [
-                GL_PERSPECTIVE_CORRECTION_HINT,
-                GL_POINT_SMOOTH_HINT,
-                GL_LINE_SMOOTH_HINT,
-                GL_POLYGON_SMOOTH_HINT,
-                GL_FOG_HINT,
-            ]
-            .map(|target| (target, GL_DONT_CARE)),
         }
     }
 }

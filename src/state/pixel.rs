@@ -1,0 +1,406 @@
+//! Pixel storage modes, pixel transfer, pixel maps, zoom and the read buffer (§3.6, §4.3,
+//! tables 6.21-6.25): stored, validated and queried. fflight draws no pixels; the one image it
+//! does unpack and pack is the polygon stipple, a 32 x 32 bitmap (§3.5.2).
+
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+
+/// GL_MAX_PIXEL_MAP_TABLE (Mesa's value; the minimum is 32).
+pub const MAX_PIXEL_MAP_TABLE: usize = 256;
+
+/// One direction's storage modes (table 3.1 for unpacking, 4.5 for packing).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PixelStoreModes {
+    pub swap_bytes: bool,
+    pub lsb_first: bool,
+    pub row_length: GLint,
+    pub image_height: GLint,
+    pub skip_rows: GLint,
+    pub skip_pixels: GLint,
+    pub skip_images: GLint,
+    pub alignment: GLint,
+}
+
+impl Default for PixelStoreModes {
+    fn default() -> PixelStoreModes {
+        PixelStoreModes {
+            swap_bytes: false,
+            lsb_first: false,
+            row_length: 0,
+            image_height: 0,
+            skip_rows: 0,
+            skip_pixels: 0,
+            skip_images: 0,
+            alignment: 4,
+        }
+    }
+}
+
+/// A glPixelStore parameter as given: glPixelStorei's integer or glPixelStoref's float.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum StoreParam {
+    Int(GLint),
+    Float(GLfloat),
+}
+
+impl StoreParam {
+    /// A boolean mode: false exactly for zero (§3.6.1).
+    fn boolean(self) -> bool {
+        match self {
+            StoreParam::Int(i) => i != 0,
+            StoreParam::Float(f) => f != 0.0,
+        }
+    }
+
+    /// An integer mode: a float is rounded to the nearest integer (§3.6.1).
+    fn integer(self) -> GLint {
+        match self {
+            StoreParam::Int(i) => i,
+            StoreParam::Float(f) => crate::state::convert::float_to_int(f),
+        }
+    }
+}
+
+/// The storage modes: client state (GL_CLIENT_PIXEL_STORE_BIT).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PixelStoreAttribs {
+    pub pack: PixelStoreModes,
+    pub unpack: PixelStoreModes,
+}
+
+impl PixelStoreAttribs {
+    /// glPixelStore (§3.6.1): GL_INVALID_ENUM for a pname that is none, GL_INVALID_VALUE for a
+    /// negative length or skip, or an alignment other than 1, 2, 4 or 8.
+    pub fn set(&mut self, pname: GLenum, param: StoreParam) -> GlResult {
+        let (packing, mode) = mode_of(pname).ok_or(GlError::InvalidEnum)?;
+        let modes = if packing {
+            &mut self.pack
+        } else {
+            &mut self.unpack
+        };
+        let value = param.integer();
+        match mode {
+            Mode::SwapBytes => modes.swap_bytes = param.boolean(),
+            Mode::LsbFirst => modes.lsb_first = param.boolean(),
+            Mode::Alignment if !matches!(value, 1 | 2 | 4 | 8) => {
+                return Err(GlError::InvalidValue);
+            }
+            Mode::Alignment => modes.alignment = value,
+            _ if value < 0 => return Err(GlError::InvalidValue),
+            Mode::RowLength => modes.row_length = value,
+            Mode::ImageHeight => modes.image_height = value,
+            Mode::SkipRows => modes.skip_rows = value,
+            Mode::SkipPixels => modes.skip_pixels = value,
+            Mode::SkipImages => modes.skip_images = value,
+        }
+        Ok(())
+    }
+
+    /// The value of a storage mode for glGet, with whether it is a boolean, or None if
+    /// `pname` is none.
+    pub fn get(&self, pname: GLenum) -> Option<(GLint, bool)> {
+        let (packing, mode) = mode_of(pname)?;
+        let modes = if packing { &self.pack } else { &self.unpack };
+        Some(match mode {
+            Mode::SwapBytes => (modes.swap_bytes as GLint, true),
+            Mode::LsbFirst => (modes.lsb_first as GLint, true),
+            Mode::RowLength => (modes.row_length, false),
+            Mode::ImageHeight => (modes.image_height, false),
+            Mode::SkipRows => (modes.skip_rows, false),
+            Mode::SkipPixels => (modes.skip_pixels, false),
+            Mode::SkipImages => (modes.skip_images, false),
+            Mode::Alignment => (modes.alignment, false),
+        })
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Mode {
+    SwapBytes,
+    LsbFirst,
+    RowLength,
+    ImageHeight,
+    SkipRows,
+    SkipPixels,
+    SkipImages,
+    Alignment,
+}
+
+/// The mode a pname names, and whether it is a packing one.
+fn mode_of(pname: GLenum) -> Option<(bool, Mode)> {
+    Some(match pname {
+        GL_PACK_SWAP_BYTES => (true, Mode::SwapBytes),
+        GL_PACK_LSB_FIRST => (true, Mode::LsbFirst),
+        GL_PACK_ROW_LENGTH => (true, Mode::RowLength),
+        GL_PACK_IMAGE_HEIGHT => (true, Mode::ImageHeight),
+        GL_PACK_SKIP_ROWS => (true, Mode::SkipRows),
+        GL_PACK_SKIP_PIXELS => (true, Mode::SkipPixels),
+        GL_PACK_SKIP_IMAGES => (true, Mode::SkipImages),
+        GL_PACK_ALIGNMENT => (true, Mode::Alignment),
+        GL_UNPACK_SWAP_BYTES => (false, Mode::SwapBytes),
+        GL_UNPACK_LSB_FIRST => (false, Mode::LsbFirst),
+        GL_UNPACK_ROW_LENGTH => (false, Mode::RowLength),
+        GL_UNPACK_IMAGE_HEIGHT => (false, Mode::ImageHeight),
+        GL_UNPACK_SKIP_ROWS => (false, Mode::SkipRows),
+        GL_UNPACK_SKIP_PIXELS => (false, Mode::SkipPixels),
+        GL_UNPACK_SKIP_IMAGES => (false, Mode::SkipImages),
+        GL_UNPACK_ALIGNMENT => (false, Mode::Alignment),
+        _ => return None,
+    })
+}
+
+/// Where the bits of a `width` x `height` bitmap lie in memory under `modes` (§3.6.4, the
+/// BITMAP type; §4.3.2 for packing): each row starts at a multiple of the alignment, after
+/// SKIP_ROWS rows and SKIP_PIXELS bits.
+#[derive(Clone, Copy, Debug)]
+struct BitmapLayout {
+    row_bytes: usize,
+    first_bit: usize,
+    lsb_first: bool,
+    width: usize,
+    height: usize,
+}
+
+impl BitmapLayout {
+    fn new(modes: &PixelStoreModes, width: usize, height: usize) -> BitmapLayout {
+        let row_length = if modes.row_length > 0 {
+            modes.row_length as usize
+        } else {
+            width
+        };
+        let alignment = modes.alignment.max(1) as usize;
+        let skip_rows = modes.skip_rows.max(0) as usize;
+        let row_bytes = row_length.div_ceil(8 * alignment) * alignment;
+        BitmapLayout {
+            row_bytes,
+            first_bit: skip_rows * row_bytes * 8 + modes.skip_pixels.max(0) as usize,
+            lsb_first: modes.lsb_first,
+            width,
+            height,
+        }
+    }
+
+    /// The bytes from the start of the memory to the last bit of the image.
+    fn span(&self) -> usize {
+        let last_row = self.first_bit + (self.height - 1) * self.row_bytes * 8;
+        (last_row + self.width).div_ceil(8)
+    }
+
+    /// The byte and the bit mask of pixel (x, y).
+    fn bit(&self, x: usize, y: usize) -> (usize, u8) {
+        let bit = self.first_bit + y * self.row_bytes * 8 + x;
+        let shift = if self.lsb_first { bit % 8 } else { 7 - bit % 8 };
+        (bit / 8, 1 << shift)
+    }
+}
+
+/// The bytes glPolygonStipple reads under the unpack modes.
+pub fn stipple_unpack_span(unpack: &PixelStoreModes) -> usize {
+    BitmapLayout::new(unpack, 32, 32).span()
+}
+
+/// The bytes glGetPolygonStipple writes into under the pack modes.
+pub fn stipple_pack_span(pack: &PixelStoreModes) -> usize {
+    BitmapLayout::new(pack, 32, 32).span()
+}
+
+/// The 32 rows of a stipple unpacked from `bytes` (at least `stipple_unpack_span` of them).
+pub fn unpack_stipple(unpack: &PixelStoreModes, bytes: &[u8]) -> GlResult<[u32; 32]> {
+    let layout = BitmapLayout::new(unpack, 32, 32);
+    if bytes.len() < layout.span() {
+        return Err(GlError::InvalidValue);
+    }
+    Ok(std::array::from_fn(|y| {
+        (0..32).fold(0u32, |row, x| {
+            let (byte, mask) = layout.bit(x, y);
+            row | (((bytes[byte] & mask != 0) as u32) << (31 - x))
+        })
+    }))
+}
+
+/// Packs the stipple's rows into `bytes` (at least `stipple_pack_span` of them), leaving the
+/// bits that are not the image's as they were.
+pub fn pack_stipple(pack: &PixelStoreModes, rows: &[u32; 32], bytes: &mut [u8]) -> GlResult {
+    let layout = BitmapLayout::new(pack, 32, 32);
+    if bytes.len() < layout.span() {
+        return Err(GlError::InvalidValue);
+    }
+    for (y, row) in rows.iter().enumerate() {
+        for x in 0..32 {
+            let (byte, mask) = layout.bit(x, y);
+            if row & (1 << (31 - x)) != 0 {
+                bytes[byte] |= mask;
+            } else {
+                bytes[byte] &= !mask;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The pixel attribute group (GL_PIXEL_MODE_BIT): transfer modes (§3.6.3), zoom (§3.6.4) and
+/// the read buffer (§4.3.2).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PixelModeAttribs {
+    pub map_color: bool,
+    pub map_stencil: bool,
+    pub index_shift: GLint,
+    pub index_offset: GLint,
+    /// Red, green, blue, alpha, depth.
+    pub scale: [f32; 5],
+    pub bias: [f32; 5],
+    /// x, y.
+    pub zoom: [f32; 2],
+    pub read_buffer: GLenum,
+}
+
+impl Default for PixelModeAttribs {
+    fn default() -> PixelModeAttribs {
+        PixelModeAttribs {
+            map_color: false,
+            map_stencil: false,
+            index_shift: 0,
+            index_offset: 0,
+            scale: [1.0; 5],
+            bias: [0.0; 5],
+            zoom: [1.0, 1.0],
+            // Single-buffered, as the draw buffer.
+            read_buffer: GL_FRONT,
+        }
+    }
+}
+
+/// The transfer pnames that are scales or biases: their index in `scale` / `bias`.
+fn scale_or_bias(pname: GLenum) -> Option<(usize, bool)> {
+    Some(match pname {
+        GL_RED_SCALE => (0, true),
+        GL_GREEN_SCALE => (1, true),
+        GL_BLUE_SCALE => (2, true),
+        GL_ALPHA_SCALE => (3, true),
+        GL_DEPTH_SCALE => (4, true),
+        GL_RED_BIAS => (0, false),
+        GL_GREEN_BIAS => (1, false),
+        GL_BLUE_BIAS => (2, false),
+        GL_ALPHA_BIAS => (3, false),
+        GL_DEPTH_BIAS => (4, false),
+        _ => return None,
+    })
+}
+
+impl PixelModeAttribs {
+    /// glPixelTransfer (§3.6.3), with the parameter as a float (glPixelTransferi's converts
+    /// exactly enough); integer modes are rounded. The imaging subset's pnames are not
+    /// supported (GL_INVALID_ENUM).
+    pub fn set_transfer(&mut self, pname: GLenum, param: f32) -> GlResult {
+        match pname {
+            GL_MAP_COLOR => self.map_color = param != 0.0,
+            GL_MAP_STENCIL => self.map_stencil = param != 0.0,
+            GL_INDEX_SHIFT => self.index_shift = crate::state::convert::float_to_int(param),
+            GL_INDEX_OFFSET => self.index_offset = crate::state::convert::float_to_int(param),
+            _ => {
+                let (index, is_scale) = scale_or_bias(pname).ok_or(GlError::InvalidEnum)?;
+                if is_scale {
+                    self.scale[index] = param;
+                } else {
+                    self.bias[index] = param;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// A transfer mode's value (a float, or an integer with whether it is a boolean), or None.
+    pub fn transfer(&self, pname: GLenum) -> Option<TransferValue> {
+        Some(match pname {
+            GL_MAP_COLOR => TransferValue::Bool(self.map_color),
+            GL_MAP_STENCIL => TransferValue::Bool(self.map_stencil),
+            GL_INDEX_SHIFT => TransferValue::Int(self.index_shift),
+            GL_INDEX_OFFSET => TransferValue::Int(self.index_offset),
+            _ => {
+                let (index, is_scale) = scale_or_bias(pname)?;
+                TransferValue::Float(if is_scale {
+                    self.scale[index]
+                } else {
+                    self.bias[index]
+                })
+            }
+        })
+    }
+}
+
+/// A pixel transfer mode's value, in its own type.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TransferValue {
+    Bool(bool),
+    Int(GLint),
+    Float(f32),
+}
+
+/// The ten pixel maps in the order of their enums (GL_PIXEL_MAP_I_TO_I ...
+/// GL_PIXEL_MAP_A_TO_A); their sizes are GL_PIXEL_MAP_x_SIZE, in the same order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PixelMaps {
+    pub maps: [Vec<f32>; 10],
+}
+
+impl Default for PixelMaps {
+    /// Each map has one entry, 0 (table 6.25).
+    fn default() -> PixelMaps {
+        PixelMaps {
+            maps: std::array::from_fn(|_| vec![0.0]),
+        }
+    }
+}
+
+/// The index of a pixel map, or None if `map` names none.
+pub fn pixel_map_index(map: GLenum) -> Option<usize> {
+    (GL_PIXEL_MAP_I_TO_I..=GL_PIXEL_MAP_A_TO_A)
+        .contains(&map)
+        .then(|| (map - GL_PIXEL_MAP_I_TO_I) as usize)
+}
+
+/// Whether a map holds indices (I_TO_I, S_TO_S) rather than color components.
+pub fn is_index_map(map: GLenum) -> bool {
+    matches!(map, GL_PIXEL_MAP_I_TO_I | GL_PIXEL_MAP_S_TO_S)
+}
+
+/// How many values glPixelMap reads: `mapsize` when it is a size GL accepts, else none (the
+/// command reports the error without reading).
+pub fn pixel_map_read_count(mapsize: GLsizei) -> usize {
+    if (1..=MAX_PIXEL_MAP_TABLE as GLsizei).contains(&mapsize) {
+        mapsize as usize
+    } else {
+        0
+    }
+}
+
+impl PixelMaps {
+    /// glPixelMap (§3.6.3), values already converted to floats. Mesa's order: the size, then
+    /// the power of two of the maps indexed by an index, then the map name. Color values are
+    /// clamped to [0, 1].
+    pub fn set(&mut self, map: GLenum, mapsize: GLsizei, values: &[f32]) -> GlResult {
+        if !(1..=MAX_PIXEL_MAP_TABLE as GLsizei).contains(&mapsize) {
+            return Err(GlError::InvalidValue);
+        }
+        let indexed_by_index = (GL_PIXEL_MAP_I_TO_I..=GL_PIXEL_MAP_I_TO_A).contains(&map);
+        if indexed_by_index && !(mapsize as u32).is_power_of_two() {
+            return Err(GlError::InvalidValue);
+        }
+        let index = pixel_map_index(map).ok_or(GlError::InvalidEnum)?;
+        let values = values
+            .get(..mapsize as usize)
+            .ok_or(GlError::InvalidValue)?;
+        self.maps[index] = if is_index_map(map) {
+            values.to_vec()
+        } else {
+            values.iter().map(|v| v.clamp(0.0, 1.0)).collect()
+        };
+        Ok(())
+    }
+
+    /// glGetPixelMap: the map's values.
+    pub fn get(&self, map: GLenum) -> GlResult<&[f32]> {
+        let index = pixel_map_index(map).ok_or(GlError::InvalidEnum)?;
+        Ok(&self.maps[index])
+    }
+}
