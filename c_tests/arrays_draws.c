@@ -30,16 +30,12 @@ static ffl_fb fb;
 
 static void start(GLenum mode)
 {
-    ffl_fb_init(&fb);
-    ffl_fb_start(&fb, feedback, FEEDBACK, GL_4D_COLOR_TEXTURE);
-    ffl_fb_mark(&fb, mode);
+    ffl_fb_draw_start(&fb, feedback, FEEDBACK, GL_4D_COLOR_TEXTURE, mode);
 }
 
 static int finish(const char *label)
 {
-    int failed = ffl_fb_finish(&fb, label, NULL, NULL);
-    printf("%s error %s\n", label, ffl_error_name(glGetError()));
-    return failed;
+    return ffl_fb_draw_finish(&fb, label);
 }
 
 int main(void)

@@ -355,6 +355,15 @@ static inline void ffl_fb_mark(ffl_fb *fb, GLenum mode)
     glPassThrough(FFL_PRIM_MARK + (GLfloat)id);
 }
 
+/* A feedback pass for one array draw (no glBegin) marked as primitive `mode`. */
+static inline void ffl_fb_draw_start(ffl_fb *fb, GLfloat *buf, GLsizei size, GLenum type,
+                                     GLenum mode)
+{
+    ffl_fb_init(fb);
+    ffl_fb_start(fb, buf, size, type);
+    ffl_fb_mark(fb, mode);
+}
+
 /* glPassThrough(marker) then glBegin(mode). */
 static inline void ffl_fb_begin(ffl_fb *fb, GLenum mode)
 {
@@ -615,6 +624,15 @@ static inline void ffl_shape(ffl_rng *r, GLenum mode, int count, double cx, doub
         }
         break;
     }
+}
+
+/* Ends a pass of ffl_fb_draw_start: prints it under `label`, then the error
+ * flag. Returns ffl_fb_finish's result. */
+static inline int ffl_fb_draw_finish(ffl_fb *fb, const char *label)
+{
+    int failed = ffl_fb_finish(fb, label, NULL, NULL);
+    printf("%s error %s\n", label, ffl_error_name(glGetError()));
+    return failed;
 }
 
 #endif /* FFL_TEST_H */

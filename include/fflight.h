@@ -1518,6 +1518,58 @@ typedef struct FflCapturedPrimitive {
 #define GL_FOG_COORD 33873
 #endif
 
+#ifndef GL_CURRENT_FOG_COORD
+#define GL_CURRENT_FOG_COORD 33875
+#endif
+
+#ifndef GL_FOG_COORD_ARRAY_TYPE
+#define GL_FOG_COORD_ARRAY_TYPE 33876
+#endif
+
+#ifndef GL_FOG_COORD_ARRAY_STRIDE
+#define GL_FOG_COORD_ARRAY_STRIDE 33877
+#endif
+
+#ifndef GL_FOG_COORD_ARRAY_POINTER
+#define GL_FOG_COORD_ARRAY_POINTER 33878
+#endif
+
+#ifndef GL_FOG_COORD_ARRAY
+#define GL_FOG_COORD_ARRAY 33879
+#endif
+
+#ifndef GL_FOG_COORD_ARRAY_BUFFER_BINDING
+#define GL_FOG_COORD_ARRAY_BUFFER_BINDING 34973
+#endif
+
+#ifndef GL_CURRENT_SECONDARY_COLOR
+#define GL_CURRENT_SECONDARY_COLOR 33881
+#endif
+
+#ifndef GL_SECONDARY_COLOR_ARRAY_SIZE
+#define GL_SECONDARY_COLOR_ARRAY_SIZE 33882
+#endif
+
+#ifndef GL_SECONDARY_COLOR_ARRAY_TYPE
+#define GL_SECONDARY_COLOR_ARRAY_TYPE 33883
+#endif
+
+#ifndef GL_SECONDARY_COLOR_ARRAY_STRIDE
+#define GL_SECONDARY_COLOR_ARRAY_STRIDE 33884
+#endif
+
+#ifndef GL_SECONDARY_COLOR_ARRAY_POINTER
+#define GL_SECONDARY_COLOR_ARRAY_POINTER 33885
+#endif
+
+#ifndef GL_SECONDARY_COLOR_ARRAY
+#define GL_SECONDARY_COLOR_ARRAY 33886
+#endif
+
+#ifndef GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING
+#define GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING 34972
+#endif
+
 #ifndef GL_FRAGMENT_DEPTH
 #define GL_FRAGMENT_DEPTH 33874
 #endif
@@ -1910,6 +1962,25 @@ void glArrayElement(GLint i);
  The enabled arrays' pointers must hold elements `first..first + count`.
  */
 void glDrawArrays(GLenum mode, GLint first, GLsizei count);
+
+/*
+ # Safety
+ `first` and `count` are NULL or point to `primcount` values; the enabled arrays' pointers
+ must hold every element the draws use.
+ */
+void glMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count, GLsizei primcount);
+
+/*
+ # Safety
+ `count` and `indices` are NULL or point to `primcount` values, each `indices[i]` to
+ `count[i]` indices of `type_` (offsets into the element array buffer if one is bound);
+ the enabled arrays' pointers must hold every element they reference.
+ */
+void glMultiDrawElements(GLenum mode,
+                         const GLsizei *count,
+                         GLenum type_,
+                         const void *const *indices,
+                         GLsizei primcount);
 
 /*
  # Safety
@@ -2736,6 +2807,150 @@ void glGetPixelMapusv(GLenum map, GLushort *values);
 void glPixelZoom(GLfloat xfactor, GLfloat yfactor);
 
 void glReadBuffer(GLenum mode);
+
+void glSecondaryColor3b(GLbyte red, GLbyte green, GLbyte blue);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glSecondaryColor3bv(const GLbyte *v);
+
+void glSecondaryColor3s(GLshort red, GLshort green, GLshort blue);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glSecondaryColor3sv(const GLshort *v);
+
+void glSecondaryColor3i(GLint red, GLint green, GLint blue);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glSecondaryColor3iv(const GLint *v);
+
+void glSecondaryColor3f(GLfloat red, GLfloat green, GLfloat blue);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glSecondaryColor3fv(const GLfloat *v);
+
+void glSecondaryColor3d(GLdouble red, GLdouble green, GLdouble blue);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glSecondaryColor3dv(const GLdouble *v);
+
+void glSecondaryColor3ub(GLubyte red, GLubyte green, GLubyte blue);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glSecondaryColor3ubv(const GLubyte *v);
+
+void glSecondaryColor3us(GLushort red, GLushort green, GLushort blue);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glSecondaryColor3usv(const GLushort *v);
+
+void glSecondaryColor3ui(GLuint red, GLuint green, GLuint blue);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glSecondaryColor3uiv(const GLuint *v);
+
+void glFogCoordf(GLfloat coord);
+
+/*
+ # Safety
+ `coord` is NULL or points to the values the command reads.
+ */
+void glFogCoordfv(const GLfloat *coord);
+
+void glFogCoordd(GLdouble coord);
+
+/*
+ # Safety
+ `coord` is NULL or points to the values the command reads.
+ */
+void glFogCoorddv(const GLdouble *coord);
+
+void glWindowPos2s(GLshort x, GLshort y);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glWindowPos2sv(const GLshort *v);
+
+void glWindowPos2i(GLint x, GLint y);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glWindowPos2iv(const GLint *v);
+
+void glWindowPos2f(GLfloat x, GLfloat y);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glWindowPos2fv(const GLfloat *v);
+
+void glWindowPos2d(GLdouble x, GLdouble y);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glWindowPos2dv(const GLdouble *v);
+
+void glWindowPos3s(GLshort x, GLshort y, GLshort z);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glWindowPos3sv(const GLshort *v);
+
+void glWindowPos3i(GLint x, GLint y, GLint z);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glWindowPos3iv(const GLint *v);
+
+void glWindowPos3f(GLfloat x, GLfloat y, GLfloat z);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glWindowPos3fv(const GLfloat *v);
+
+void glWindowPos3d(GLdouble x, GLdouble y, GLdouble z);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glWindowPos3dv(const GLdouble *v);
 
 void glLightf(GLenum light, GLenum pname, GLfloat param);
 

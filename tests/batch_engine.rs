@@ -166,6 +166,7 @@ fn random_vertex(rng: &mut Rng) -> (Vec4, CurrentAttribs) {
         ),
         tex_coord: rng.vec4(-1.0, 1.0),
         edge_flag: rng.coin(),
+        fog_coord: rng.uniform(-1.0, 1.0),
     };
     (position, attribs)
 }

@@ -379,7 +379,7 @@ const CAPS: [GLenum; 59] = [
 const VALID_CAPS: usize = 56;
 /// The glGet pnames of vertex processing, the older rasterization state and the buffer
 /// bindings; `get_pnames` adds those of tests/common/state_lists.rs.
-const GET_PNAMES: [GLenum; 82] = [
+const GET_PNAMES: [GLenum; 84] = [
     GL_MAX_LIGHTS,
     GL_MAX_CLIP_PLANES,
     GL_MAX_VIEWPORT_DIMS,
@@ -462,6 +462,8 @@ const GET_PNAMES: [GLenum; 82] = [
     GL_COLOR_ARRAY_BUFFER_BINDING,
     GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING,
     GL_EDGE_FLAG_ARRAY_BUFFER_BINDING,
+    GL_CURRENT_SECONDARY_COLOR,
+    GL_CURRENT_FOG_COORD,
 ];
 const BUFFER_TARGETS: [GLenum; 2] = [GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER];
 const BUFFER_USAGES: [GLenum; 9] = [

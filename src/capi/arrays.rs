@@ -19,7 +19,7 @@
 
 use std::ffi::c_void;
 
-use super::with_context;
+use super::{read, with_context};
 use crate::commands::arrays::{ArraySources, ElementIndices};
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
@@ -146,6 +146,83 @@ pub unsafe extern "C" fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei
         let indices = ctx.check_draw_arrays(mode, first, count)?;
         // SAFETY: forwarded from the caller.
         unsafe { draw(ctx, mode, &indices) }
+    })
+}
+
+/// The `primcount` values at `values`: GL_INVALID_VALUE for NULL when there are any.
+///
+/// # Safety
+/// A non-NULL `values` must point to `primcount` readable values.
+unsafe fn read_list<'a, T>(values: *const T, primcount: usize) -> GlResult<&'a [T]> {
+    // SAFETY: forwarded from the caller.
+    let list = unsafe { read(values, primcount) };
+    if list.len() < primcount {
+        return Err(GlError::InvalidValue);
+    }
+    Ok(list)
+}
+
+/// One draw of glMultiDrawArrays or glMultiDrawElements: its error is recorded as its own
+/// call's would be, and the next draw still runs.
+fn record(ctx: &mut Context, result: GlResult) {
+    if let Err(error) = result {
+        ctx.record_error(error);
+    }
+}
+
+/// # Safety
+/// `first` and `count` are NULL or point to `primcount` values; the enabled arrays' pointers
+/// must hold every element the draws use.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiDrawArrays(
+    mode: GLenum,
+    first: *const GLint,
+    count: *const GLsizei,
+    primcount: GLsizei,
+) {
+    with_context(|ctx| {
+        let n = ctx.check_multi_draw(mode, None, primcount)?;
+        // SAFETY: forwarded from the caller.
+        let (first, count) = unsafe { (read_list(first, n)?, read_list(count, n)?) };
+        for (&first, &count) in first.iter().zip(count).filter(|(_, count)| **count > 0) {
+            let result = ctx
+                .check_draw_arrays(mode, first, count)
+                .and_then(|indices| {
+                    // SAFETY: forwarded from the caller.
+                    unsafe { draw(ctx, mode, &indices) }
+                });
+            record(ctx, result);
+        }
+        Ok(())
+    })
+}
+
+/// # Safety
+/// `count` and `indices` are NULL or point to `primcount` values, each `indices[i]` to
+/// `count[i]` indices of `type_` (offsets into the element array buffer if one is bound);
+/// the enabled arrays' pointers must hold every element they reference.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiDrawElements(
+    mode: GLenum,
+    count: *const GLsizei,
+    type_: GLenum,
+    indices: *const *const c_void,
+    primcount: GLsizei,
+) {
+    with_context(|ctx| {
+        let n = ctx.check_multi_draw(mode, Some(type_), primcount)?;
+        // SAFETY: forwarded from the caller.
+        let (count, indices) = unsafe { (read_list(count, n)?, read_list(indices, n)?) };
+        for (&count, &indices) in count.iter().zip(indices).filter(|(count, _)| **count > 0) {
+            let result = ctx
+                .check_draw_elements(mode, count, type_)
+                .and_then(|size| {
+                    // SAFETY: forwarded from the caller.
+                    unsafe { draw_elements(ctx, mode, type_, indices, size) }
+                });
+            record(ctx, result);
+        }
+        Ok(())
     })
 }
 

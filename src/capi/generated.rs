@@ -473,3 +473,327 @@ pub extern "C" fn glReadBuffer(mode: GLenum) {
         ctx.read_buffer(mode)
     })
 }
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glSecondaryColor3b(red: GLbyte, green: GLbyte, blue: GLbyte) {
+    with_context(|ctx| {
+        { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glSecondaryColor3bv(v: *const GLbyte) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        ctx.secondary_color_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glSecondaryColor3s(red: GLshort, green: GLshort, blue: GLshort) {
+    with_context(|ctx| {
+        { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glSecondaryColor3sv(v: *const GLshort) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        ctx.secondary_color_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glSecondaryColor3i(red: GLint, green: GLint, blue: GLint) {
+    with_context(|ctx| {
+        { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glSecondaryColor3iv(v: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        ctx.secondary_color_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glSecondaryColor3f(red: GLfloat, green: GLfloat, blue: GLfloat) {
+    with_context(|ctx| {
+        { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glSecondaryColor3fv(v: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        ctx.secondary_color_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glSecondaryColor3d(red: GLdouble, green: GLdouble, blue: GLdouble) {
+    with_context(|ctx| {
+        { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glSecondaryColor3dv(v: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        ctx.secondary_color_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glSecondaryColor3ub(red: GLubyte, green: GLubyte, blue: GLubyte) {
+    with_context(|ctx| {
+        { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glSecondaryColor3ubv(v: *const GLubyte) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        ctx.secondary_color_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glSecondaryColor3us(red: GLushort, green: GLushort, blue: GLushort) {
+    with_context(|ctx| {
+        { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glSecondaryColor3usv(v: *const GLushort) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        ctx.secondary_color_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glSecondaryColor3ui(red: GLuint, green: GLuint, blue: GLuint) {
+    with_context(|ctx| {
+        { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glSecondaryColor3uiv(v: *const GLuint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        ctx.secondary_color_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glFogCoordf(coord: GLfloat) {
+    with_context(|ctx| {
+        { ctx.fog_coord(coord); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `coord` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glFogCoordfv(coord: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let coord = unsafe { read(coord, 1) };
+        ctx.fog_coord_v(coord)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glFogCoordd(coord: GLdouble) {
+    with_context(|ctx| {
+        { ctx.fog_coord(coord as f32); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `coord` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glFogCoorddv(coord: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let coord = unsafe { read(coord, 1) };
+        ctx.fog_coord_v(coord)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glWindowPos2s(x: GLshort, y: GLshort) {
+    with_context(|ctx| {
+        ctx.window_pos_of(x, y, 0 as GLshort)
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glWindowPos2sv(v: *const GLshort) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 2) };
+        ctx.window_pos_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glWindowPos2i(x: GLint, y: GLint) {
+    with_context(|ctx| {
+        ctx.window_pos_of(x, y, 0 as GLint)
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glWindowPos2iv(v: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 2) };
+        ctx.window_pos_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glWindowPos2f(x: GLfloat, y: GLfloat) {
+    with_context(|ctx| {
+        ctx.window_pos_of(x, y, 0 as GLfloat)
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glWindowPos2fv(v: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 2) };
+        ctx.window_pos_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glWindowPos2d(x: GLdouble, y: GLdouble) {
+    with_context(|ctx| {
+        ctx.window_pos_of(x, y, 0 as GLdouble)
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glWindowPos2dv(v: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 2) };
+        ctx.window_pos_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glWindowPos3s(x: GLshort, y: GLshort, z: GLshort) {
+    with_context(|ctx| {
+        ctx.window_pos_of(x, y, z)
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glWindowPos3sv(v: *const GLshort) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        ctx.window_pos_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glWindowPos3i(x: GLint, y: GLint, z: GLint) {
+    with_context(|ctx| {
+        ctx.window_pos_of(x, y, z)
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glWindowPos3iv(v: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        ctx.window_pos_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glWindowPos3f(x: GLfloat, y: GLfloat, z: GLfloat) {
+    with_context(|ctx| {
+        ctx.window_pos_of(x, y, z)
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glWindowPos3fv(v: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        ctx.window_pos_v(v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glWindowPos3d(x: GLdouble, y: GLdouble, z: GLdouble) {
+    with_context(|ctx| {
+        ctx.window_pos_of(x, y, z)
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glWindowPos3dv(v: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        ctx.window_pos_v(v)
+    })
+}

@@ -302,6 +302,25 @@ impl Context {
         Ok(ElementIndices::Sequential { first, count })
     }
 
+    /// glMultiDrawArrays / glMultiDrawElements (§2.8): the checks of the whole call, in Mesa's
+    /// order (glBegin/glEnd, primcount, mode, index type); returns how many draws it holds.
+    /// Each draw is then the glDrawArrays or glDrawElements the spec's loop makes, for the
+    /// counts above 0 only: a negative count is skipped, not an error (Mesa rejects the call).
+    pub fn check_multi_draw(
+        &self,
+        mode: GLenum,
+        index_type: Option<GLenum>,
+        primcount: i32,
+    ) -> GlResult<usize> {
+        self.outside_begin_end()?;
+        let primcount = usize::try_from(primcount).map_err(|_| GlError::InvalidValue)?;
+        check_mode(mode)?;
+        if let Some(index_type) = index_type {
+            index_size(index_type).ok_or(GlError::InvalidEnum)?;
+        }
+        Ok(primcount)
+    }
+
     /// glDrawElements' checks, in Mesa's order: glBegin/glEnd, count, mode, type. Returns
     /// how many bytes of indices the draw reads.
     pub fn check_draw_elements(

@@ -93,6 +93,8 @@ impl Context {
             GL_CURRENT_COLOR => normalized(&self.current.color.to_array()),
             GL_CURRENT_NORMAL => normalized(&self.current.normal.to_array()),
             GL_CURRENT_TEXTURE_COORDS => floats(&self.current.tex_coord.to_array()),
+            GL_CURRENT_SECONDARY_COLOR => normalized(&self.current.secondary_color.to_array()),
+            GL_CURRENT_FOG_COORD => floats(&[self.current.fog_coord]),
             GL_CURRENT_RASTER_POSITION => floats(&self.raster_position.window.to_array()),
             GL_CURRENT_RASTER_POSITION_VALID => StateValue::Bools(vec![self.raster_position.valid]),
             GL_CURRENT_RASTER_COLOR => normalized(&self.raster_position.color.to_array()),

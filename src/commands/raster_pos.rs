@@ -4,7 +4,9 @@
 use glam::Vec4;
 
 use crate::context::{Context, RenderMode};
-use crate::error::GlResult;
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+use crate::lighting::clamp01;
 use crate::pipeline::clip::point_visible;
 
 /// The current raster position and the attributes it carries (table 6.5).
@@ -64,11 +66,68 @@ impl Context {
             color: vertex.colors.front.primary,
             secondary_color: vertex.colors.front.secondary,
             tex_coord: vertex.tex_coord,
-            distance: eye_point.length() as f32,
+            distance: self.raster_distance(eye_point.length() as f32),
         };
         if self.render_mode == RenderMode::Select {
             self.selection.hit(window.z);
         }
         Ok(())
+    }
+
+    /// The raster distance (§2.13): the current fog coordinate when it is the fog source, else
+    /// `eye_distance`.
+    fn raster_distance(&self, eye_distance: f32) -> f32 {
+        if self.fog.coord_src == GL_FOG_COORD {
+            self.current.fog_coord
+        } else {
+            eye_distance
+        }
+    }
+
+    /// glWindowPos (§2.13): the raster position in window coordinates, z mapped into the depth
+    /// range (clamped to it); no transformation, lighting or clipping: the raster colors are
+    /// the current ones clamped to [0, 1], the texture coordinate is the current one, and the
+    /// position is valid. In selection mode it is a hit, as in Mesa.
+    pub fn window_pos(&mut self, [x, y, z]: [f64; 3]) -> GlResult {
+        self.outside_begin_end()?;
+        let [near, far] = self.raster.depth_range;
+        let depth = if z <= 0.0 {
+            near
+        } else if z >= 1.0 {
+            far
+        } else {
+            near + z * (far - near)
+        };
+        let window = Vec4::new(x as f32, y as f32, depth as f32, 1.0);
+        self.raster_position = RasterPosition {
+            window,
+            valid: true,
+            color: clamp01(self.current.color),
+            secondary_color: clamp01(self.current.secondary_color),
+            tex_coord: self.current.tex_coord,
+            distance: self.raster_distance(0.0),
+        };
+        if self.render_mode == RenderMode::Select {
+            self.selection.hit(window.z);
+        }
+        Ok(())
+    }
+
+    /// glWindowPos from any component type (converted directly).
+    pub fn window_pos_of<T: Into<f64>>(&mut self, x: T, y: T, z: T) -> GlResult {
+        self.window_pos([x.into(), y.into(), z.into()])
+    }
+
+    /// glWindowPos2v / glWindowPos3v: `v` holds 2 or 3 values (z 0 for 2); GL_INVALID_VALUE
+    /// for a NULL (empty) vector.
+    pub fn window_pos_v<T: Into<f64> + Copy>(&mut self, v: &[T]) -> GlResult {
+        match *v {
+            [x, y] => self.window_pos([x.into(), y.into(), 0.0]),
+            [x, y, z] => self.window_pos([x.into(), y.into(), z.into()]),
+            _ => {
+                self.outside_begin_end()?;
+                Err(GlError::InvalidValue)
+            }
+        }
     }
 }

@@ -6,6 +6,7 @@ use crate::context::{Context, PrimitiveInProgress};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use crate::pipeline::block::InputBlock;
+use crate::state::convert::Component;
 
 impl Context {
     /// glColor: also sets the material properties that an enabled color material tracks.
@@ -14,6 +15,35 @@ impl Context {
         if self.color_material.enabled {
             self.apply_color_material();
         }
+    }
+
+    /// glSecondaryColor3 (§2.7): the alpha of the current secondary color stays 1.
+    pub fn secondary_color(&mut self, [red, green, blue]: [f32; 3]) {
+        self.current.secondary_color = Vec4::new(red, green, blue, 1.0);
+    }
+
+    /// glSecondaryColor3 from integer or float components, converted per table 2.9.
+    pub fn secondary_color_of<T: Component>(&mut self, components: [T; 3]) {
+        self.secondary_color(components.map(Component::normalized));
+    }
+
+    /// glSecondaryColor3v: GL_INVALID_VALUE for a NULL (empty) vector.
+    pub fn secondary_color_v<T: Component>(&mut self, v: &[T]) -> GlResult {
+        let components: [T; 3] = v.try_into().map_err(|_| GlError::InvalidValue)?;
+        self.secondary_color_of(components);
+        Ok(())
+    }
+
+    /// glFogCoord (§2.7).
+    pub fn fog_coord(&mut self, coord: f32) {
+        self.current.fog_coord = coord;
+    }
+
+    /// glFogCoordv: GL_INVALID_VALUE for a NULL (empty) vector.
+    pub fn fog_coord_v<T: Component>(&mut self, v: &[T]) -> GlResult {
+        let [coord]: [T; 1] = v.try_into().map_err(|_| GlError::InvalidValue)?;
+        self.fog_coord(coord.direct());
+        Ok(())
     }
 
     /// glNormal.

@@ -13,6 +13,8 @@ pub struct CurrentAttribs {
     pub normal: Vec3,
     pub tex_coord: Vec4,
     pub edge_flag: bool,
+    /// The current fog coordinate (§2.7): raster distance with GL_FOG_COORD as fog source.
+    pub fog_coord: f32,
 }
 
 impl Default for CurrentAttribs {
@@ -24,6 +26,7 @@ impl Default for CurrentAttribs {
             normal: Vec3::Z,
             tex_coord: Vec4::W,
             edge_flag: true,
+            fog_coord: 0.0,
         }
     }
 }
