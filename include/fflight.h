@@ -1890,6 +1890,18 @@ typedef struct FflCapturedPrimitive {
 #define GL_ADD 260
 #endif
 
+#ifndef GL_COLOR
+#define GL_COLOR 6144
+#endif
+
+#ifndef GL_DEPTH
+#define GL_DEPTH 6145
+#endif
+
+#ifndef GL_STENCIL
+#define GL_STENCIL 6146
+#endif
+
 
 
 
@@ -2951,6 +2963,22 @@ void glWindowPos3d(GLdouble x, GLdouble y, GLdouble z);
  `v` is NULL or points to the values the command reads.
  */
 void glWindowPos3dv(const GLdouble *v);
+
+/*
+ The bitmap is not read: there is no framebuffer to draw it into.
+
+ # Safety
+ `_bitmap` is NULL or points to the values the command reads.
+ */
+void glBitmap(GLsizei width,
+              GLsizei height,
+              GLfloat _xorig,
+              GLfloat _yorig,
+              GLfloat xmove,
+              GLfloat ymove,
+              const GLubyte *_bitmap);
+
+void glCopyPixels(GLint _x, GLint _y, GLsizei width, GLsizei height, GLenum kind);
 
 void glLightf(GLenum light, GLenum pname, GLfloat param);
 

@@ -472,3 +472,8 @@ pub const GL_LOAD: GLenum = 0x0101;
 pub const GL_RETURN: GLenum = 0x0102;
 pub const GL_MULT: GLenum = 0x0103;
 pub const GL_ADD: GLenum = 0x0104;
+
+// glCopyPixels' types (§4.3.3).
+pub const GL_COLOR: GLenum = 0x1800;
+pub const GL_DEPTH: GLenum = 0x1801;
+pub const GL_STENCIL: GLenum = 0x1802;

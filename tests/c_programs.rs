@@ -876,6 +876,7 @@ c_programs!(
     spot_cutoff,
     local_viewer,
     window_pos_secondary_fog,
+    bitmap_copy_pixels,
     multi_draw,
     multi_draw_osmesa_diff_negative_count,
     two_sided_points,

@@ -797,3 +797,23 @@ pub unsafe extern "C" fn glWindowPos3dv(v: *const GLdouble) {
         ctx.window_pos_v(v)
     })
 }
+
+/// The bitmap is not read: there is no framebuffer to draw it into.
+///
+/// # Safety
+/// `_bitmap` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glBitmap(width: GLsizei, height: GLsizei, _xorig: GLfloat, _yorig: GLfloat, xmove: GLfloat, ymove: GLfloat, _bitmap: *const GLubyte) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let _bitmap = unsafe { read(_bitmap, 0) };
+        ctx.bitmap(width, height, xmove, ymove)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyPixels(_x: GLint, _y: GLint, width: GLsizei, height: GLsizei, kind: GLenum) {
+    with_context(|ctx| {
+        ctx.copy_pixels(width, height, kind)
+    })
+}

@@ -8,6 +8,7 @@ use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use crate::lighting::clamp01;
 use crate::pipeline::clip::point_visible;
+use crate::pipeline::feedback::FeedbackVertex;
 
 /// The current raster position and the attributes it carries (table 6.5).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -111,6 +112,56 @@ impl Context {
             self.selection.hit(window.z);
         }
         Ok(())
+    }
+
+    /// glBitmap (§3.7): with a valid raster position, fed back as GL_BITMAP_TOKEN and the
+    /// raster position's vertex (§5.3), then the raster position moves by (`xmove`, `ymove`).
+    /// There is no framebuffer to draw the bitmap into, and no selection hit (§5.2 counts
+    /// primitives and raster positions only). Negative sizes are GL_INVALID_VALUE.
+    pub fn bitmap(&mut self, width: i32, height: i32, xmove: f32, ymove: f32) -> GlResult {
+        self.outside_begin_end()?;
+        if width < 0 || height < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        if self.raster_position.valid {
+            self.feed_back_raster_position(GL_BITMAP_TOKEN);
+            let window = &mut self.raster_position.window;
+            window.x += xmove;
+            window.y += ymove;
+        }
+        Ok(())
+    }
+
+    /// glCopyPixels (§4.3.3): checked (sizes, then the type), and with a valid raster
+    /// position fed back as GL_COPY_PIXEL_TOKEN and the raster position's vertex. Nothing is
+    /// copied: there is no framebuffer.
+    pub fn copy_pixels(&mut self, width: i32, height: i32, kind: GLenum) -> GlResult {
+        self.outside_begin_end()?;
+        if width < 0 || height < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        if !matches!(kind, GL_COLOR | GL_DEPTH | GL_STENCIL) {
+            return Err(GlError::InvalidEnum);
+        }
+        if self.raster_position.valid {
+            self.feed_back_raster_position(GL_COPY_PIXEL_TOKEN);
+        }
+        Ok(())
+    }
+
+    /// In feedback mode, `token` and the current raster position as a vertex (window
+    /// coordinates, clip w, raster color and texture coordinate).
+    fn feed_back_raster_position(&mut self, token: GLenum) {
+        if self.render_mode != RenderMode::Feedback {
+            return;
+        }
+        let raster = self.raster_position;
+        self.feedback.token(token);
+        self.feedback.vertex(&FeedbackVertex {
+            window: raster.window,
+            color: raster.color,
+            tex_coord: raster.tex_coord,
+        });
     }
 
     /// glWindowPos from any component type (converted directly).
