@@ -1948,6 +1948,16 @@ void glTexCoordPointer(GLint size, GLenum type_, GLsizei stride, const void *ptr
  */
 void glEdgeFlagPointer(GLsizei stride, const void *ptr);
 
+/*
+ `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+ */
+void glSecondaryColorPointer(GLint size, GLenum type_, GLsizei stride, const void *ptr);
+
+/*
+ `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+ */
+void glFogCoordPointer(GLenum type_, GLsizei stride, const void *ptr);
+
 void glEnableClientState(GLenum array);
 
 void glDisableClientState(GLenum array);

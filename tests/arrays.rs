@@ -145,6 +145,10 @@ impl Array {
                 ArrayKind::Color => glColorPointer(self.size, self.ty, self.stride, ptr),
                 ArrayKind::TexCoord => glTexCoordPointer(self.size, self.ty, self.stride, ptr),
                 ArrayKind::EdgeFlag => glEdgeFlagPointer(self.stride, ptr),
+                ArrayKind::SecondaryColor => {
+                    glSecondaryColorPointer(self.size, self.ty, self.stride, ptr)
+                }
+                ArrayKind::FogCoord => glFogCoordPointer(self.ty, self.stride, ptr),
             }
             glEnableClientState(client_state(self.kind));
         }
@@ -165,6 +169,16 @@ impl Array {
         use ArrayKind::*;
         call!(
             (EdgeFlag, 1, GL_UNSIGNED_BYTE) => glEdgeFlagv,
+            (SecondaryColor, 3, GL_BYTE) => glSecondaryColor3bv,
+            (SecondaryColor, 3, GL_UNSIGNED_BYTE) => glSecondaryColor3ubv,
+            (SecondaryColor, 3, GL_SHORT) => glSecondaryColor3sv,
+            (SecondaryColor, 3, GL_UNSIGNED_SHORT) => glSecondaryColor3usv,
+            (SecondaryColor, 3, GL_INT) => glSecondaryColor3iv,
+            (SecondaryColor, 3, GL_UNSIGNED_INT) => glSecondaryColor3uiv,
+            (SecondaryColor, 3, GL_FLOAT) => glSecondaryColor3fv,
+            (SecondaryColor, 3, GL_DOUBLE) => glSecondaryColor3dv,
+            (FogCoord, 1, GL_FLOAT) => glFogCoordfv,
+            (FogCoord, 1, GL_DOUBLE) => glFogCoorddv,
             (Color, 3, GL_BYTE) => glColor3bv,
             (Color, 3, GL_UNSIGNED_BYTE) => glColor3ubv,
             (Color, 3, GL_SHORT) => glColor3sv,
@@ -225,6 +239,8 @@ fn client_state(kind: ArrayKind) -> GLenum {
         ArrayKind::Color => GL_COLOR_ARRAY,
         ArrayKind::TexCoord => GL_TEXTURE_COORD_ARRAY,
         ArrayKind::EdgeFlag => GL_EDGE_FLAG_ARRAY,
+        ArrayKind::SecondaryColor => GL_SECONDARY_COLOR_ARRAY,
+        ArrayKind::FogCoord => GL_FOG_COORD_ARRAY,
     }
 }
 
@@ -313,11 +329,14 @@ fn check(what: &str, arrays: &[Array], mode: GLenum, draw: Draw, indices: &[usiz
         fflCaptureBegin();
         glBegin(mode);
     }
+    // §2.8's order of the commands glArrayElement stands for; the vertex last.
     let order = [
         ArrayKind::EdgeFlag,
         ArrayKind::TexCoord,
         ArrayKind::Color,
+        ArrayKind::SecondaryColor,
         ArrayKind::Normal,
+        ArrayKind::FogCoord,
         ArrayKind::Vertex,
     ];
     for &i in indices {
@@ -339,6 +358,17 @@ fn check(what: &str, arrays: &[Array], mode: GLenum, draw: Draw, indices: &[usiz
     assert_eq!(array_primitives, immediate_primitives, "{what}: primitives");
 }
 
+const COLOR_TYPES: [GLenum; 8] = [
+    GL_BYTE,
+    GL_UNSIGNED_BYTE,
+    GL_SHORT,
+    GL_UNSIGNED_SHORT,
+    GL_INT,
+    GL_UNSIGNED_INT,
+    GL_FLOAT,
+    GL_DOUBLE,
+];
+
 /// Every type, size and stride (packed, unaligned, padded) of array `kind`, with the other
 /// arrays fixed (float vertices always, so that something is drawn).
 fn every_format_of(kind: ArrayKind, lit: bool) {
@@ -349,19 +379,9 @@ fn every_format_of(kind: ArrayKind, lit: bool) {
     let (types, sizes): (&[GLenum], &[i32]) = match kind {
         ArrayKind::Vertex => (&[GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE], &[2, 3, 4]),
         ArrayKind::Normal => (&[GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE], &[3]),
-        ArrayKind::Color => (
-            &[
-                GL_BYTE,
-                GL_UNSIGNED_BYTE,
-                GL_SHORT,
-                GL_UNSIGNED_SHORT,
-                GL_INT,
-                GL_UNSIGNED_INT,
-                GL_FLOAT,
-                GL_DOUBLE,
-            ],
-            &[3, 4],
-        ),
+        ArrayKind::Color => (&COLOR_TYPES, &[3, 4]),
+        ArrayKind::SecondaryColor => (&COLOR_TYPES, &[3]),
+        ArrayKind::FogCoord => (&[GL_FLOAT, GL_DOUBLE], &[1]),
         ArrayKind::TexCoord => (&[GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE], &[1, 2, 3, 4]),
         ArrayKind::EdgeFlag => (&[GL_UNSIGNED_BYTE], &[1]),
     };
@@ -424,6 +444,8 @@ fn vertex_arrays_of_every_format_equal_immediate_mode_lit() {
         ArrayKind::Color,
         ArrayKind::TexCoord,
         ArrayKind::EdgeFlag,
+        ArrayKind::SecondaryColor,
+        ArrayKind::FogCoord,
     ] {
         every_format_of(kind, true);
     }
@@ -436,6 +458,7 @@ fn vertex_arrays_of_every_format_equal_immediate_mode_unlit() {
         ArrayKind::Color,
         ArrayKind::TexCoord,
         ArrayKind::EdgeFlag,
+        ArrayKind::SecondaryColor,
     ] {
         every_format_of(kind, false);
     }

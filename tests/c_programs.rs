@@ -877,6 +877,8 @@ c_programs!(
     local_viewer,
     window_pos_secondary_fog,
     bitmap_copy_pixels,
+    arrays_secondary_fog,
+    arrays_osmesa_diff_interleaved_disables,
     multi_draw,
     multi_draw_osmesa_diff_negative_count,
     two_sided_points,

@@ -303,17 +303,19 @@ const COLOR_MATERIAL_MODES: [GLenum; 5] = [
     GL_EMISSION,
     GL_AMBIENT_AND_DIFFUSE,
 ];
-const CLIENT_ARRAYS: [GLenum; 6] = [
+const CLIENT_ARRAYS: [GLenum; 8] = [
     GL_VERTEX_ARRAY,
     GL_NORMAL_ARRAY,
     GL_COLOR_ARRAY,
     GL_INDEX_ARRAY,
     GL_TEXTURE_COORD_ARRAY,
     GL_EDGE_FLAG_ARRAY,
+    GL_SECONDARY_COLOR_ARRAY,
+    GL_FOG_COORD_ARRAY,
 ];
 /// Every capability glEnable accepts: lighting, clip planes, culling, the rasterization
 /// capabilities fflight stores (values of <GL/gl.h>), and the client arrays.
-const CAPS: [GLenum; 59] = [
+const CAPS: [GLenum; 61] = [
     GL_LIGHTING,
     GL_LIGHT0,
     GL_LIGHT1,
@@ -370,16 +372,18 @@ const CAPS: [GLenum; 59] = [
     GL_INDEX_ARRAY,
     GL_TEXTURE_COORD_ARRAY,
     GL_EDGE_FLAG_ARRAY,
+    GL_SECONDARY_COLOR_ARRAY,
+    GL_FOG_COORD_ARRAY,
     // Not capabilities: glEnable must reject these neighbors of real ones.
     GL_COLOR_MATERIAL_FACE,
     GL_LIGHT_MODEL_AMBIENT,
     GL_MAX_LIGHTS,
 ];
 /// How many of `CAPS` are capabilities.
-const VALID_CAPS: usize = 56;
+const VALID_CAPS: usize = 58;
 /// The glGet pnames of vertex processing, the older rasterization state and the buffer
 /// bindings; `get_pnames` adds those of tests/common/state_lists.rs.
-const GET_PNAMES: [GLenum; 84] = [
+const GET_PNAMES: [GLenum; 91] = [
     GL_MAX_LIGHTS,
     GL_MAX_CLIP_PLANES,
     GL_MAX_VIEWPORT_DIMS,
@@ -462,6 +466,13 @@ const GET_PNAMES: [GLenum; 84] = [
     GL_COLOR_ARRAY_BUFFER_BINDING,
     GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING,
     GL_EDGE_FLAG_ARRAY_BUFFER_BINDING,
+    GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING,
+    GL_FOG_COORD_ARRAY_BUFFER_BINDING,
+    GL_SECONDARY_COLOR_ARRAY_SIZE,
+    GL_SECONDARY_COLOR_ARRAY_TYPE,
+    GL_SECONDARY_COLOR_ARRAY_STRIDE,
+    GL_FOG_COORD_ARRAY_TYPE,
+    GL_FOG_COORD_ARRAY_STRIDE,
     GL_CURRENT_SECONDARY_COLOR,
     GL_CURRENT_FOG_COORD,
 ];
@@ -604,22 +615,26 @@ const INTERLEAVED_FORMATS: [GLenum; 14] = [
     GL_T2F_C4F_N3F_V3F,
     GL_T4F_C4F_N3F_V4F,
 ];
-const POINTER_PNAMES: [GLenum; 7] = [
+const POINTER_PNAMES: [GLenum; 9] = [
     GL_VERTEX_ARRAY_POINTER,
     GL_NORMAL_ARRAY_POINTER,
     GL_COLOR_ARRAY_POINTER,
     GL_TEXTURE_COORD_ARRAY_POINTER,
     GL_EDGE_FLAG_ARRAY_POINTER,
+    GL_SECONDARY_COLOR_ARRAY_POINTER,
+    GL_FOG_COORD_ARRAY_POINTER,
     GL_FEEDBACK_BUFFER_POINTER,
     GL_SELECTION_BUFFER_POINTER,
 ];
 const STRING_NAMES: [GLenum; 4] = [GL_VENDOR, GL_RENDERER, GL_VERSION, GL_EXTENSIONS];
-const ARRAY_KINDS: [ArrayKind; 5] = [
+const ARRAY_KINDS: [ArrayKind; 7] = [
     ArrayKind::Vertex,
     ArrayKind::Normal,
     ArrayKind::Color,
     ArrayKind::TexCoord,
     ArrayKind::EdgeFlag,
+    ArrayKind::SecondaryColor,
+    ArrayKind::FogCoord,
 ];
 
 // ---- the commands ----
@@ -1173,6 +1188,10 @@ impl Op {
                         ArrayKind::Color => {
                             !valid(component_type, &COMPONENT_TYPES) || !(3..=4).contains(&size)
                         }
+                        ArrayKind::SecondaryColor => {
+                            !valid(component_type, &COMPONENT_TYPES) || size != 3
+                        }
+                        ArrayKind::FogCoord => !valid(component_type, &[GL_FLOAT, GL_DOUBLE]),
                         ArrayKind::EdgeFlag => false,
                     }
             }
@@ -1272,7 +1291,7 @@ fn light_model_values(pname: GLenum) -> usize {
 }
 
 /// The bytes a sequence's vertex arrays read, one buffer per array.
-struct ArrayBytes([Vec<u8>; 5]);
+struct ArrayBytes([Vec<u8>; 7]);
 
 impl ArrayBytes {
     /// Random contents; with `finite`, every float or double read at any offset is finite.
@@ -1846,6 +1865,10 @@ fn apply(
             ArrayKind::Color => ctx.color_pointer(*size, *component_type, *stride, *address),
             ArrayKind::TexCoord => ctx.tex_coord_pointer(*size, *component_type, *stride, *address),
             ArrayKind::EdgeFlag => ctx.edge_flag_pointer(*stride, *address),
+            ArrayKind::SecondaryColor => {
+                ctx.secondary_color_pointer(*size, *component_type, *stride, *address)
+            }
+            ArrayKind::FogCoord => ctx.fog_coord_pointer(*component_type, *stride, *address),
         },
         Op::ClientState { array, enabled } => ctx.client_state(*array, *enabled),
         Op::InterleavedArrays {

@@ -24,14 +24,14 @@ use crate::commands::arrays::{ArraySources, ElementIndices};
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
-use crate::state::arrays::ByteSpan;
+use crate::state::arrays::{ARRAY_KINDS, ByteSpan};
 
 /// The enabled arrays' bytes at `spans`, starting with element `base`.
 ///
 /// # Safety
 /// Each span must lie in memory that stays readable for `'a` (the application's arrays
 /// hold the elements the draw uses).
-unsafe fn sources<'a>(base: usize, spans: &[Option<ByteSpan>; 5]) -> ArraySources<'a> {
+unsafe fn sources<'a>(base: usize, spans: &[Option<ByteSpan>; ARRAY_KINDS]) -> ArraySources<'a> {
     let mut sources = ArraySources::new(base);
     for (bytes, span) in sources.bytes.iter_mut().zip(spans) {
         if let Some(span) = span {
@@ -92,6 +92,23 @@ pub extern "C" fn glTexCoordPointer(
 #[unsafe(no_mangle)]
 pub extern "C" fn glEdgeFlagPointer(stride: GLsizei, ptr: *const c_void) {
     with_context(|ctx| ctx.edge_flag_pointer(stride, ptr as usize))
+}
+
+/// `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+#[unsafe(no_mangle)]
+pub extern "C" fn glSecondaryColorPointer(
+    size: GLint,
+    type_: GLenum,
+    stride: GLsizei,
+    ptr: *const c_void,
+) {
+    with_context(|ctx| ctx.secondary_color_pointer(size, type_, stride, ptr as usize))
+}
+
+/// `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+#[unsafe(no_mangle)]
+pub extern "C" fn glFogCoordPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+    with_context(|ctx| ctx.fog_coord_pointer(type_, stride, ptr as usize))
 }
 
 #[unsafe(no_mangle)]

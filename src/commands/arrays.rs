@@ -25,7 +25,7 @@ use crate::lighting::lanes::LANES;
 use crate::pipeline::block::InputBlock;
 use crate::pipeline::fetch::ArrayFetch;
 use crate::pipeline::parallel::light_in_order;
-use crate::state::arrays::{ArrayKind, ByteSpan, ClientArray, VertexArrays};
+use crate::state::arrays::{ARRAY_KINDS, ArrayKind, ByteSpan, ClientArray, VertexArrays};
 use crate::threads::thread_count;
 
 /// The size of one index of glDrawElements' `type`; `None` for an invalid type.
@@ -110,7 +110,7 @@ impl ElementIndices<'_> {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ArraySources<'a> {
     pub base: usize,
-    pub bytes: [&'a [u8]; 5],
+    pub bytes: [&'a [u8]; ARRAY_KINDS],
 }
 
 impl<'a> ArraySources<'a> {
@@ -118,7 +118,7 @@ impl<'a> ArraySources<'a> {
     pub fn new(base: usize) -> ArraySources<'a> {
         ArraySources {
             base,
-            bytes: [&[]; 5],
+            bytes: [&[]; ARRAY_KINDS],
         }
     }
 
@@ -137,11 +137,13 @@ struct Element {
     color: Option<Vec4>,
     tex_coord: Option<Vec4>,
     edge_flag: Option<bool>,
+    secondary_color: Option<[f32; 3]>,
+    fog_coord: Option<f32>,
 }
 
 /// Decodes elements of the enabled arrays from sources checked to hold them.
 struct ArrayReader<'a> {
-    arrays: [Option<(&'a ClientArray, &'a [u8])>; 5],
+    arrays: [Option<(&'a ClientArray, &'a [u8])>; ARRAY_KINDS],
     base: usize,
 }
 
@@ -154,7 +156,7 @@ impl<'a> ArrayReader<'a> {
         last: usize,
     ) -> GlResult<ArrayReader<'a>> {
         let mut reader = ArrayReader {
-            arrays: [None; 5],
+            arrays: [None; ARRAY_KINDS],
             base: sources.base,
         };
         if first < sources.base {
@@ -185,6 +187,10 @@ impl<'a> ArrayReader<'a> {
             color: self.read(ArrayKind::Color, index).map(Vec4::from_array),
             tex_coord: self.read(ArrayKind::TexCoord, index).map(Vec4::from_array),
             edge_flag: self.read(ArrayKind::EdgeFlag, index).map(|e| e[0] != 0.0),
+            secondary_color: self
+                .read(ArrayKind::SecondaryColor, index)
+                .map(|c| [c[0], c[1], c[2]]),
+            fog_coord: self.read(ArrayKind::FogCoord, index).map(|f| f[0]),
         }
     }
 }
@@ -257,6 +263,34 @@ impl Context {
     pub fn edge_flag_pointer(&mut self, stride: i32, address: usize) -> GlResult {
         self.arrays
             .set_pointer(ArrayKind::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, address)
+    }
+
+    /// glSecondaryColorPointer (GL 1.4).
+    pub fn secondary_color_pointer(
+        &mut self,
+        size: i32,
+        component_type: GLenum,
+        stride: i32,
+        address: usize,
+    ) -> GlResult {
+        self.arrays.set_pointer(
+            ArrayKind::SecondaryColor,
+            size,
+            component_type,
+            stride,
+            address,
+        )
+    }
+
+    /// glFogCoordPointer (GL 1.4).
+    pub fn fog_coord_pointer(
+        &mut self,
+        component_type: GLenum,
+        stride: i32,
+        address: usize,
+    ) -> GlResult {
+        self.arrays
+            .set_pointer(ArrayKind::FogCoord, 1, component_type, stride, address)
     }
 
     /// glEnableClientState / glDisableClientState. GL_INDEX_ARRAY is accepted and only
@@ -364,7 +398,7 @@ impl Context {
     pub fn array_spans(
         &self,
         indices: &ElementIndices,
-    ) -> GlResult<Option<(usize, [Option<ByteSpan>; 5])>> {
+    ) -> GlResult<Option<(usize, [Option<ByteSpan>; ARRAY_KINDS])>> {
         // Without the vertex array not even the indices are read.
         if !self.arrays.get(ArrayKind::Vertex).enabled {
             return Ok(None);
@@ -393,8 +427,14 @@ impl Context {
         if let Some(color) = element.color {
             self.color(color);
         }
+        if let Some(secondary_color) = element.secondary_color {
+            self.secondary_color(secondary_color);
+        }
         if let Some(normal) = element.normal {
             self.normal(normal);
+        }
+        if let Some(fog_coord) = element.fog_coord {
+            self.fog_coord(fog_coord);
         }
         if let Some(position) = element.position {
             self.vertex(position);

@@ -8,11 +8,11 @@ use crate::commands::arrays::ArraySources;
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
-use crate::state::arrays::{ALL_KINDS, VertexArrays};
+use crate::state::arrays::{ALL_KINDS, ARRAY_KINDS, VertexArrays};
 use crate::state::buffers::check_target;
 
 /// The stores of the enabled arrays sourced from buffer objects, held for one draw.
-pub type ArrayStores = [Option<Arc<Vec<u8>>>; 5];
+pub type ArrayStores = [Option<Arc<Vec<u8>>>; ARRAY_KINDS];
 
 impl Context {
     /// The buffer object name bound to `target` (0 if none): GL_INVALID_ENUM for another

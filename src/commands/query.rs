@@ -147,7 +147,9 @@ impl Context {
             | GL_COLOR_ARRAY
             | GL_INDEX_ARRAY
             | GL_TEXTURE_COORD_ARRAY
-            | GL_EDGE_FLAG_ARRAY => {
+            | GL_EDGE_FLAG_ARRAY
+            | GL_SECONDARY_COLOR_ARRAY
+            | GL_FOG_COORD_ARRAY => {
                 StateValue::Bools(vec![self.arrays.is_enabled(pname) == Some(true)])
             }
             GL_VERTEX_ARRAY_SIZE => int(self.arrays.get(ArrayKind::Vertex).size),
@@ -164,6 +166,23 @@ impl Context {
             }
             GL_TEXTURE_COORD_ARRAY_STRIDE => int(self.arrays.get(ArrayKind::TexCoord).stride),
             GL_EDGE_FLAG_ARRAY_STRIDE => int(self.arrays.get(ArrayKind::EdgeFlag).stride),
+            GL_SECONDARY_COLOR_ARRAY_SIZE => int(self.arrays.get(ArrayKind::SecondaryColor).size),
+            GL_SECONDARY_COLOR_ARRAY_TYPE => {
+                enumeration(self.arrays.get(ArrayKind::SecondaryColor).component_type)
+            }
+            GL_SECONDARY_COLOR_ARRAY_STRIDE => {
+                int(self.arrays.get(ArrayKind::SecondaryColor).stride)
+            }
+            GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING => {
+                int(self.arrays.get(ArrayKind::SecondaryColor).buffer as i32)
+            }
+            GL_FOG_COORD_ARRAY_TYPE => {
+                enumeration(self.arrays.get(ArrayKind::FogCoord).component_type)
+            }
+            GL_FOG_COORD_ARRAY_STRIDE => int(self.arrays.get(ArrayKind::FogCoord).stride),
+            GL_FOG_COORD_ARRAY_BUFFER_BINDING => {
+                int(self.arrays.get(ArrayKind::FogCoord).buffer as i32)
+            }
             GL_ARRAY_BUFFER_BINDING => int(self.arrays.array_buffer as i32),
             GL_ELEMENT_ARRAY_BUFFER_BINDING => int(self.arrays.element_array_buffer as i32),
             GL_VERTEX_ARRAY_BUFFER_BINDING => int(self.arrays.get(ArrayKind::Vertex).buffer as i32),

@@ -5,7 +5,7 @@
 use crate::gl::*;
 use crate::lighting::lanes::LanesF32;
 use crate::pipeline::block::InputBlock;
-use crate::state::arrays::{ALL_KINDS, ArrayKind, ClientArray};
+use crate::state::arrays::{ALL_KINDS, ARRAY_KINDS, ArrayKind, ClientArray};
 use crate::state::convert::Component;
 
 /// A component type as it sits in an array's bytes (native byte order, any alignment).
@@ -97,13 +97,16 @@ struct ArraySource<'a> {
 /// The enabled arrays of a draw, ready to fill blocks.
 pub struct ArrayFetch<'a> {
     base: usize,
-    arrays: [Option<ArraySource<'a>>; 5],
+    arrays: [Option<ArraySource<'a>>; ARRAY_KINDS],
 }
 
 impl<'a> ArrayFetch<'a> {
     /// `arrays[kind]`: the enabled arrays' state and bytes, which start with element `base`
     /// and hold every element the draw reads (checked by the caller).
-    pub fn new(base: usize, arrays: [Option<(&ClientArray, &'a [u8])>; 5]) -> ArrayFetch<'a> {
+    pub fn new(
+        base: usize,
+        arrays: [Option<(&ClientArray, &'a [u8])>; ARRAY_KINDS],
+    ) -> ArrayFetch<'a> {
         let arrays = std::array::from_fn(|k| {
             arrays[k].map(|(array, bytes)| ArraySource {
                 bytes,
@@ -120,21 +123,24 @@ impl<'a> ArrayFetch<'a> {
         let mut offsets = [0; crate::lighting::lanes::LANES];
         block.len = indices.len();
         let mut edge_flags = [[0.0; crate::lighting::lanes::LANES]; 1];
-        for (kind, source) in self.arrays.iter().enumerate() {
+        for (kind, source) in ALL_KINDS.into_iter().zip(&self.arrays) {
             let Some(source) = source else { continue };
+            let out: &mut [LanesF32] = match kind {
+                ArrayKind::Vertex => &mut block.position,
+                ArrayKind::Normal => &mut block.normal,
+                ArrayKind::Color => &mut block.color,
+                ArrayKind::TexCoord => &mut block.tex_coord,
+                ArrayKind::SecondaryColor => &mut block.secondary_color,
+                ArrayKind::EdgeFlag => &mut edge_flags,
+                // The fog coordinate reaches nothing vertex processing computes.
+                ArrayKind::FogCoord => continue,
+            };
             for (offset, &index) in offsets.iter_mut().zip(indices) {
                 *offset = (index - self.base) * source.stride;
             }
             let offsets = &offsets[..indices.len()];
-            let out: &mut [LanesF32] = match kind {
-                0 => &mut block.position,
-                1 => &mut block.normal,
-                2 => &mut block.color,
-                3 => &mut block.tex_coord,
-                _ => &mut edge_flags,
-            };
             (source.convert)(source.bytes, offsets, out);
-            if kind == ArrayKind::EdgeFlag as usize {
+            if kind == ArrayKind::EdgeFlag {
                 for (flag, value) in block.edge_flag.iter_mut().zip(edge_flags[0]) {
                     *flag = value != 0.0;
                 }

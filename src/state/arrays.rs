@@ -14,15 +14,22 @@ pub enum ArrayKind {
     Color,
     TexCoord,
     EdgeFlag,
+    SecondaryColor,
+    FogCoord,
 }
 
+/// How many arrays there are.
+pub const ARRAY_KINDS: usize = 7;
+
 /// Every array, in storage order.
-pub const ALL_KINDS: [ArrayKind; 5] = [
+pub const ALL_KINDS: [ArrayKind; ARRAY_KINDS] = [
     ArrayKind::Vertex,
     ArrayKind::Normal,
     ArrayKind::Color,
     ArrayKind::TexCoord,
     ArrayKind::EdgeFlag,
+    ArrayKind::SecondaryColor,
+    ArrayKind::FogCoord,
 ];
 
 impl ArrayKind {
@@ -34,6 +41,8 @@ impl ArrayKind {
             GL_COLOR_ARRAY => ArrayKind::Color,
             GL_TEXTURE_COORD_ARRAY => ArrayKind::TexCoord,
             GL_EDGE_FLAG_ARRAY => ArrayKind::EdgeFlag,
+            GL_SECONDARY_COLOR_ARRAY => ArrayKind::SecondaryColor,
+            GL_FOG_COORD_ARRAY => ArrayKind::FogCoord,
             _ => return None,
         })
     }
@@ -46,6 +55,8 @@ impl ArrayKind {
             GL_COLOR_ARRAY_POINTER => ArrayKind::Color,
             GL_TEXTURE_COORD_ARRAY_POINTER => ArrayKind::TexCoord,
             GL_EDGE_FLAG_ARRAY_POINTER => ArrayKind::EdgeFlag,
+            GL_SECONDARY_COLOR_ARRAY_POINTER => ArrayKind::SecondaryColor,
+            GL_FOG_COORD_ARRAY_POINTER => ArrayKind::FogCoord,
             _ => return None,
         })
     }
@@ -62,8 +73,11 @@ impl ArrayKind {
                     GL_BYTE | GL_SHORT | GL_INT | GL_FLOAT | GL_DOUBLE
                 )
             }
-            ArrayKind::Color => component_size(component_type).is_some(),
+            ArrayKind::Color | ArrayKind::SecondaryColor => {
+                component_size(component_type).is_some()
+            }
             ArrayKind::EdgeFlag => component_type == GL_UNSIGNED_BYTE,
+            ArrayKind::FogCoord => matches!(component_type, GL_FLOAT | GL_DOUBLE),
         }
     }
 
@@ -74,13 +88,17 @@ impl ArrayKind {
             ArrayKind::Normal => size == 3,
             ArrayKind::Color => (3..=4).contains(&size),
             ArrayKind::TexCoord => (1..=4).contains(&size),
-            ArrayKind::EdgeFlag => size == 1,
+            ArrayKind::EdgeFlag | ArrayKind::FogCoord => size == 1,
+            ArrayKind::SecondaryColor => size == 3,
         }
     }
 
     /// Integer colors and normals are normalized (table 2.9); coordinates convert directly.
     pub fn normalized(self) -> bool {
-        matches!(self, ArrayKind::Normal | ArrayKind::Color)
+        matches!(
+            self,
+            ArrayKind::Normal | ArrayKind::Color | ArrayKind::SecondaryColor
+        )
     }
 }
 
@@ -203,7 +221,7 @@ pub struct ByteSpan {
 /// The vertex arrays of a context (table 6.8).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct VertexArrays {
-    arrays: [ClientArray; 5],
+    arrays: [ClientArray; ARRAY_KINDS],
     /// GL_INDEX_ARRAY's enable: fflight has no color index mode, so it is only stored for
     /// glIsEnabled.
     pub index_enabled: bool,
@@ -222,6 +240,8 @@ impl Default for VertexArrays {
                 ClientArray::initial(4, GL_FLOAT),
                 ClientArray::initial(4, GL_FLOAT),
                 ClientArray::initial(1, GL_UNSIGNED_BYTE),
+                ClientArray::initial(3, GL_FLOAT),
+                ClientArray::initial(1, GL_FLOAT),
             ],
             index_enabled: false,
             array_buffer: 0,
@@ -300,8 +320,8 @@ impl VertexArrays {
     /// objects are the context's to read). A NULL pointer is GL's undefined behavior;
     /// fflight's documented choice is GL_INVALID_OPERATION (nothing is drawn).
     /// GL_INVALID_VALUE when the range does not fit the address space.
-    pub fn spans(&self, first: usize, last: usize) -> GlResult<[Option<ByteSpan>; 5]> {
-        let mut spans = [None; 5];
+    pub fn spans(&self, first: usize, last: usize) -> GlResult<[Option<ByteSpan>; ARRAY_KINDS]> {
+        let mut spans = [None; ARRAY_KINDS];
         for (kind, array) in self.enabled().filter(|(_, array)| array.buffer == 0) {
             if array.address == 0 {
                 return Err(GlError::InvalidOperation);
@@ -339,7 +359,13 @@ impl VertexArrays {
             }
         };
         self.index_enabled = false;
-        self.arrays[ArrayKind::EdgeFlag as usize].enabled = false;
+        for kind in [
+            ArrayKind::EdgeFlag,
+            ArrayKind::SecondaryColor,
+            ArrayKind::FogCoord,
+        ] {
+            self.arrays[kind as usize].enabled = false;
+        }
         let parts = [
             (ArrayKind::TexCoord, layout.tex_coord),
             (ArrayKind::Color, layout.color),

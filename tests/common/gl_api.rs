@@ -101,6 +101,18 @@ unsafe extern "C" {
     pub fn glColorPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c_void);
     pub fn glTexCoordPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c_void);
     pub fn glEdgeFlagPointer(stride: GLsizei, ptr: *const c_void);
+    pub fn glSecondaryColorPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c_void);
+    pub fn glFogCoordPointer(ty: GLenum, stride: GLsizei, ptr: *const c_void);
+    pub fn glSecondaryColor3bv(v: *const GLbyte);
+    pub fn glSecondaryColor3ubv(v: *const GLubyte);
+    pub fn glSecondaryColor3sv(v: *const GLshort);
+    pub fn glSecondaryColor3usv(v: *const GLushort);
+    pub fn glSecondaryColor3iv(v: *const GLint);
+    pub fn glSecondaryColor3uiv(v: *const GLuint);
+    pub fn glSecondaryColor3fv(v: *const GLfloat);
+    pub fn glSecondaryColor3dv(v: *const GLdouble);
+    pub fn glFogCoordfv(v: *const GLfloat);
+    pub fn glFogCoorddv(v: *const GLdouble);
     pub fn glEnableClientState(array: GLenum);
     pub fn glDisableClientState(array: GLenum);
     pub fn glInterleavedArrays(format: GLenum, stride: GLsizei, ptr: *const c_void);
