@@ -1102,6 +1102,26 @@ typedef struct FflCapturedPrimitive {
 #define GL_BUFFER_MAP_POINTER 35005
 #endif
 
+#ifndef GL_SAMPLES_PASSED
+#define GL_SAMPLES_PASSED 35092
+#endif
+
+#ifndef GL_QUERY_COUNTER_BITS
+#define GL_QUERY_COUNTER_BITS 34916
+#endif
+
+#ifndef GL_CURRENT_QUERY
+#define GL_CURRENT_QUERY 34917
+#endif
+
+#ifndef GL_QUERY_RESULT
+#define GL_QUERY_RESULT 34918
+#endif
+
+#ifndef GL_QUERY_RESULT_AVAILABLE
+#define GL_QUERY_RESULT_AVAILABLE 34919
+#endif
+
 #ifndef GL_NEVER
 #define GL_NEVER 512
 #endif
@@ -2989,6 +3009,42 @@ void glBitmap(GLsizei width,
               const GLubyte *_bitmap);
 
 void glCopyPixels(GLint _x, GLint _y, GLsizei width, GLsizei height, GLenum kind);
+
+/*
+ # Safety
+ `ids` is NULL or has room for the values the command writes.
+ */
+void glGenQueries(GLsizei n, GLuint *ids);
+
+/*
+ # Safety
+ `ids` is NULL or points to the values the command reads.
+ */
+void glDeleteQueries(GLsizei n, const GLuint *ids);
+
+GLboolean glIsQuery(GLuint id);
+
+void glBeginQuery(GLenum target, GLuint id);
+
+void glEndQuery(GLenum target);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetQueryiv(GLenum target, GLenum pname, GLint *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetQueryObjectiv(GLuint id, GLenum pname, GLint *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetQueryObjectuiv(GLuint id, GLenum pname, GLuint *params);
 
 void glLightf(GLenum light, GLenum pname, GLfloat param);
 

@@ -275,6 +275,13 @@ pub const GL_BUFFER_USAGE: GLenum = 0x8765;
 pub const GL_BUFFER_ACCESS: GLenum = 0x88BB;
 pub const GL_BUFFER_MAPPED: GLenum = 0x88BC;
 pub const GL_BUFFER_MAP_POINTER: GLenum = 0x88BD;
+
+// Occlusion queries (GL 1.5, §4.1.7).
+pub const GL_SAMPLES_PASSED: GLenum = 0x8914;
+pub const GL_QUERY_COUNTER_BITS: GLenum = 0x8864;
+pub const GL_CURRENT_QUERY: GLenum = 0x8865;
+pub const GL_QUERY_RESULT: GLenum = 0x8866;
+pub const GL_QUERY_RESULT_AVAILABLE: GLenum = 0x8867;
 pub const GL_NEVER: GLenum = 0x0200;
 pub const GL_LESS: GLenum = 0x0201;
 pub const GL_EQUAL: GLenum = 0x0202;

@@ -879,6 +879,7 @@ c_programs!(
     bitmap_copy_pixels,
     arrays_secondary_fog,
     arrays_osmesa_diff_interleaved_disables,
+    occlusion_queries,
     multi_draw,
     multi_draw_osmesa_diff_negative_count,
     two_sided_points,

@@ -23,9 +23,6 @@ unsafe fn bytes<'a>(data: *const c_void, size: GLsizeiptr) -> &'a [u8] {
 pub unsafe extern "C" fn glGenBuffers(n: GLsizei, buffers: *mut GLuint) {
     with_context(|ctx| {
         let names = ctx.gen_buffers(n)?;
-        if names.is_empty() {
-            return Ok(());
-        }
         // SAFETY: the caller guarantees room for `n` names at a non-NULL `buffers`.
         unsafe { write(buffers, &names) }
     })
@@ -104,9 +101,6 @@ pub unsafe extern "C" fn glGetBufferSubData(
 ) {
     with_context(|ctx| {
         let values = ctx.get_buffer_sub_data(target, offset, size)?;
-        if values.is_empty() {
-            return Ok(());
-        }
         // SAFETY: the caller guarantees room for `size` bytes at a non-NULL `data`.
         unsafe { write(data.cast::<u8>(), values) }
     })

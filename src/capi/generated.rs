@@ -817,3 +817,79 @@ pub extern "C" fn glCopyPixels(_x: GLint, _y: GLint, width: GLsizei, height: GLs
         ctx.copy_pixels(width, height, kind)
     })
 }
+
+/// # Safety
+/// `ids` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGenQueries(n: GLsizei, ids: *mut GLuint) {
+    with_context(|ctx| {
+        let written = ctx.gen_queries(n)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(ids, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `ids` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glDeleteQueries(n: GLsizei, ids: *const GLuint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let ids = unsafe { read(ids, n.max(0) as usize) };
+        ctx.delete_queries(n, ids)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glIsQuery(id: GLuint) -> GLboolean {
+    with_context(|ctx| {
+        ctx.is_query(id).map(GLboolean::from)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glBeginQuery(target: GLenum, id: GLuint) {
+    with_context(|ctx| {
+        ctx.begin_query(target, id)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEndQuery(target: GLenum) {
+    with_context(|ctx| {
+        ctx.end_query(target)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetQueryiv(target: GLenum, pname: GLenum, params: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_query(target, pname).map(|v| [v])?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetQueryObjectiv(id: GLuint, pname: GLenum, params: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_query_object(id, pname).map(|v| [v as GLint])?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetQueryObjectuiv(id: GLuint, pname: GLenum, params: *mut GLuint) {
+    with_context(|ctx| {
+        let written = ctx.get_query_object(id, pname).map(|v| [v])?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}

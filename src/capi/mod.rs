@@ -70,11 +70,15 @@ pub(crate) unsafe fn read_mut<'a, T>(ptr: *mut T, count: usize) -> &'a mut [T] {
     }
 }
 
-/// Writes `values` to `ptr` unless it is NULL; a NULL destination is GL_INVALID_VALUE.
+/// Writes `values` to `ptr`; a NULL destination for values to write is GL_INVALID_VALUE
+/// (with nothing to write, any pointer will do: glGenQueries(0, NULL) is no error).
 ///
 /// # Safety
 /// A non-NULL `ptr` must have room for `values.len()` values.
 pub(crate) unsafe fn write<T: Copy>(ptr: *mut T, values: &[T]) -> GlResult {
+    if values.is_empty() {
+        return Ok(());
+    }
     if ptr.is_null() {
         return Err(crate::error::GlError::InvalidValue);
     }

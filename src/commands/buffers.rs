@@ -1,6 +1,7 @@
 //! Buffer objects (§2.9): glGenBuffers, glDeleteBuffers, glBindBuffer, glIsBuffer,
 //! glBufferData, glBufferSubData, glGetBufferSubData, glMapBuffer, glUnmapBuffer,
-//! glGetBufferParameteriv, glGetBufferPointerv; and the stores a draw reads its arrays from.
+//! glGetBufferParameteriv, glGetBufferPointerv; the stores a draw reads its arrays from; and
+//! the occlusion queries of the same GL version (§4.1.7): glGenQueries ... glGetQueryObject.
 
 use std::sync::Arc;
 
@@ -172,4 +173,54 @@ pub(crate) fn with_stores<'a>(
         sources.bytes[kind as usize] = start.and_then(|start| store.get(start..)).unwrap_or(&[]);
     }
     sources
+}
+
+impl Context {
+    /// glGenQueries.
+    pub fn gen_queries(&mut self, count: i32) -> GlResult<Vec<GLuint>> {
+        self.outside_begin_end()?;
+        let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
+        Ok(self.queries.generate(count))
+    }
+
+    /// glDeleteQueries: `ids` holds `count` names (fewer: a NULL pointer).
+    pub fn delete_queries(&mut self, count: i32, ids: &[GLuint]) -> GlResult {
+        self.outside_begin_end()?;
+        let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
+        if ids.len() < count {
+            return Err(GlError::InvalidValue);
+        }
+        ids.iter().for_each(|&id| self.queries.delete(id));
+        Ok(())
+    }
+
+    /// glIsQuery.
+    pub fn is_query(&self, id: GLuint) -> GlResult<bool> {
+        self.outside_begin_end()?;
+        Ok(self.queries.is_query(id))
+    }
+
+    /// glBeginQuery.
+    pub fn begin_query(&mut self, target: GLenum, id: GLuint) -> GlResult {
+        self.outside_begin_end()?;
+        self.queries.begin(target, id)
+    }
+
+    /// glEndQuery.
+    pub fn end_query(&mut self, target: GLenum) -> GlResult {
+        self.outside_begin_end()?;
+        self.queries.end(target)
+    }
+
+    /// glGetQueryiv.
+    pub fn get_query(&self, target: GLenum, pname: GLenum) -> GlResult<i32> {
+        self.outside_begin_end()?;
+        self.queries.target_parameter(target, pname)
+    }
+
+    /// glGetQueryObject{i,ui}v.
+    pub fn get_query_object(&self, id: GLuint, pname: GLenum) -> GlResult<u32> {
+        self.outside_begin_end()?;
+        self.queries.object_parameter(id, pname)
+    }
 }

@@ -70,14 +70,9 @@ fn range(offset: isize, size: isize, len: usize) -> GlResult<std::ops::Range<usi
 }
 
 impl BufferObjects {
-    /// glGenBuffers: `count` names no object or earlier glGenBuffers uses, counting up from
-    /// the largest name in use (as Mesa does).
+    /// glGenBuffers.
     pub fn generate(&mut self, count: usize) -> Vec<GLuint> {
-        let largest = self.objects.keys().chain(&self.reserved).max().copied();
-        let first = largest.unwrap_or(0).saturating_add(1);
-        let names: Vec<GLuint> = (first..=GLuint::MAX).take(count).collect();
-        self.reserved.extend(&names);
-        names
+        super::names::generate(self.objects.keys().copied(), &mut self.reserved, count)
     }
 
     /// glIsBuffer: whether `name` is an object (a name glGenBuffers returned is not one

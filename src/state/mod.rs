@@ -11,6 +11,8 @@ pub mod light;
 pub mod light_model;
 pub mod material;
 pub mod matrix;
+pub mod names;
 pub mod pixel;
+pub mod queries;
 pub mod raster;
 pub mod rasterization;
