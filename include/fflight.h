@@ -1922,6 +1922,26 @@ typedef struct FflCapturedPrimitive {
 #define GL_STENCIL 6146
 #endif
 
+#ifndef GL_CURRENT_INDEX
+#define GL_CURRENT_INDEX 2817
+#endif
+
+#ifndef GL_INDEX_ARRAY_TYPE
+#define GL_INDEX_ARRAY_TYPE 32901
+#endif
+
+#ifndef GL_INDEX_ARRAY_STRIDE
+#define GL_INDEX_ARRAY_STRIDE 32902
+#endif
+
+#ifndef GL_INDEX_ARRAY_POINTER
+#define GL_INDEX_ARRAY_POINTER 32913
+#endif
+
+#ifndef GL_INDEX_ARRAY_BUFFER_BINDING
+#define GL_INDEX_ARRAY_BUFFER_BINDING 34969
+#endif
+
 
 
 
@@ -1972,6 +1992,11 @@ void glEdgeFlagPointer(GLsizei stride, const void *ptr);
  `ptr` must stay valid, holding the elements later draws use, until it is replaced.
  */
 void glSecondaryColorPointer(GLint size, GLenum type_, GLsizei stride, const void *ptr);
+
+/*
+ `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+ */
+void glIndexPointer(GLenum type_, GLsizei stride, const void *ptr);
 
 /*
  `ptr` must stay valid, holding the elements later draws use, until it is replaced.
@@ -3045,6 +3070,46 @@ void glGetQueryObjectiv(GLuint id, GLenum pname, GLint *params);
  `params` is NULL or has room for the values the command writes.
  */
 void glGetQueryObjectuiv(GLuint id, GLenum pname, GLuint *params);
+
+void glIndexd(GLdouble c);
+
+/*
+ # Safety
+ `c` is NULL or points to the values the command reads.
+ */
+void glIndexdv(const GLdouble *c);
+
+void glIndexf(GLfloat c);
+
+/*
+ # Safety
+ `c` is NULL or points to the values the command reads.
+ */
+void glIndexfv(const GLfloat *c);
+
+void glIndexi(GLint c);
+
+/*
+ # Safety
+ `c` is NULL or points to the values the command reads.
+ */
+void glIndexiv(const GLint *c);
+
+void glIndexs(GLshort c);
+
+/*
+ # Safety
+ `c` is NULL or points to the values the command reads.
+ */
+void glIndexsv(const GLshort *c);
+
+void glIndexub(GLubyte c);
+
+/*
+ # Safety
+ `c` is NULL or points to the values the command reads.
+ */
+void glIndexubv(const GLubyte *c);
 
 void glLightf(GLenum light, GLenum pname, GLfloat param);
 

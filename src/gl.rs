@@ -484,3 +484,10 @@ pub const GL_ADD: GLenum = 0x0104;
 pub const GL_COLOR: GLenum = 0x1800;
 pub const GL_DEPTH: GLenum = 0x1801;
 pub const GL_STENCIL: GLenum = 0x1802;
+
+// Color indices (§2.7, §2.8): kept and queried; RGBA mode never uses them.
+pub const GL_CURRENT_INDEX: GLenum = 0x0B01;
+pub const GL_INDEX_ARRAY_TYPE: GLenum = 0x8085;
+pub const GL_INDEX_ARRAY_STRIDE: GLenum = 0x8086;
+pub const GL_INDEX_ARRAY_POINTER: GLenum = 0x8091;
+pub const GL_INDEX_ARRAY_BUFFER_BINDING: GLenum = 0x8899;

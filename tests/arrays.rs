@@ -149,6 +149,7 @@ impl Array {
                     glSecondaryColorPointer(self.size, self.ty, self.stride, ptr)
                 }
                 ArrayKind::FogCoord => glFogCoordPointer(self.ty, self.stride, ptr),
+                ArrayKind::Index => glIndexPointer(self.ty, self.stride, ptr),
             }
             glEnableClientState(client_state(self.kind));
         }
@@ -179,6 +180,11 @@ impl Array {
             (SecondaryColor, 3, GL_DOUBLE) => glSecondaryColor3dv,
             (FogCoord, 1, GL_FLOAT) => glFogCoordfv,
             (FogCoord, 1, GL_DOUBLE) => glFogCoorddv,
+            (Index, 1, GL_UNSIGNED_BYTE) => glIndexubv,
+            (Index, 1, GL_SHORT) => glIndexsv,
+            (Index, 1, GL_INT) => glIndexiv,
+            (Index, 1, GL_FLOAT) => glIndexfv,
+            (Index, 1, GL_DOUBLE) => glIndexdv,
             (Color, 3, GL_BYTE) => glColor3bv,
             (Color, 3, GL_UNSIGNED_BYTE) => glColor3ubv,
             (Color, 3, GL_SHORT) => glColor3sv,
@@ -241,6 +247,7 @@ fn client_state(kind: ArrayKind) -> GLenum {
         ArrayKind::EdgeFlag => GL_EDGE_FLAG_ARRAY,
         ArrayKind::SecondaryColor => GL_SECONDARY_COLOR_ARRAY,
         ArrayKind::FogCoord => GL_FOG_COORD_ARRAY,
+        ArrayKind::Index => GL_INDEX_ARRAY,
     }
 }
 
@@ -335,6 +342,7 @@ fn check(what: &str, arrays: &[Array], mode: GLenum, draw: Draw, indices: &[usiz
         ArrayKind::TexCoord,
         ArrayKind::Color,
         ArrayKind::SecondaryColor,
+        ArrayKind::Index,
         ArrayKind::Normal,
         ArrayKind::FogCoord,
         ArrayKind::Vertex,
@@ -382,6 +390,10 @@ fn every_format_of(kind: ArrayKind, lit: bool) {
         ArrayKind::Color => (&COLOR_TYPES, &[3, 4]),
         ArrayKind::SecondaryColor => (&COLOR_TYPES, &[3]),
         ArrayKind::FogCoord => (&[GL_FLOAT, GL_DOUBLE], &[1]),
+        ArrayKind::Index => (
+            &[GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE],
+            &[1],
+        ),
         ArrayKind::TexCoord => (&[GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE], &[1, 2, 3, 4]),
         ArrayKind::EdgeFlag => (&[GL_UNSIGNED_BYTE], &[1]),
     };
@@ -446,6 +458,7 @@ fn vertex_arrays_of_every_format_equal_immediate_mode_lit() {
         ArrayKind::EdgeFlag,
         ArrayKind::SecondaryColor,
         ArrayKind::FogCoord,
+        ArrayKind::Index,
     ] {
         every_format_of(kind, true);
     }

@@ -167,6 +167,7 @@ fn random_vertex(rng: &mut Rng) -> (Vec4, CurrentAttribs) {
         tex_coord: rng.vec4(-1.0, 1.0),
         edge_flag: rng.coin(),
         fog_coord: rng.uniform(-1.0, 1.0),
+        index: rng.uniform(0.0, 8.0),
     };
     (position, attribs)
 }

@@ -880,6 +880,7 @@ c_programs!(
     arrays_secondary_fog,
     arrays_osmesa_diff_interleaved_disables,
     occlusion_queries,
+    color_index_state,
     multi_draw,
     multi_draw_osmesa_diff_negative_count,
     two_sided_points,

@@ -383,7 +383,11 @@ const CAPS: [GLenum; 61] = [
 const VALID_CAPS: usize = 58;
 /// The glGet pnames of vertex processing, the older rasterization state and the buffer
 /// bindings; `get_pnames` adds those of tests/common/state_lists.rs.
-const GET_PNAMES: [GLenum; 91] = [
+const GET_PNAMES: [GLenum; 95] = [
+    GL_INDEX_ARRAY_TYPE,
+    GL_INDEX_ARRAY_STRIDE,
+    GL_INDEX_ARRAY_BUFFER_BINDING,
+    GL_CURRENT_INDEX,
     GL_MAX_LIGHTS,
     GL_MAX_CLIP_PLANES,
     GL_MAX_VIEWPORT_DIMS,
@@ -615,7 +619,8 @@ const INTERLEAVED_FORMATS: [GLenum; 14] = [
     GL_T2F_C4F_N3F_V3F,
     GL_T4F_C4F_N3F_V4F,
 ];
-const POINTER_PNAMES: [GLenum; 9] = [
+const POINTER_PNAMES: [GLenum; 10] = [
+    GL_INDEX_ARRAY_POINTER,
     GL_VERTEX_ARRAY_POINTER,
     GL_NORMAL_ARRAY_POINTER,
     GL_COLOR_ARRAY_POINTER,
@@ -627,7 +632,7 @@ const POINTER_PNAMES: [GLenum; 9] = [
     GL_SELECTION_BUFFER_POINTER,
 ];
 const STRING_NAMES: [GLenum; 4] = [GL_VENDOR, GL_RENDERER, GL_VERSION, GL_EXTENSIONS];
-const ARRAY_KINDS: [ArrayKind; 7] = [
+const ARRAY_KINDS: [ArrayKind; 8] = [
     ArrayKind::Vertex,
     ArrayKind::Normal,
     ArrayKind::Color,
@@ -635,6 +640,7 @@ const ARRAY_KINDS: [ArrayKind; 7] = [
     ArrayKind::EdgeFlag,
     ArrayKind::SecondaryColor,
     ArrayKind::FogCoord,
+    ArrayKind::Index,
 ];
 
 // ---- the commands ----
@@ -1192,6 +1198,10 @@ impl Op {
                             !valid(component_type, &COMPONENT_TYPES) || size != 3
                         }
                         ArrayKind::FogCoord => !valid(component_type, &[GL_FLOAT, GL_DOUBLE]),
+                        ArrayKind::Index => !valid(
+                            component_type,
+                            &[GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE],
+                        ),
                         ArrayKind::EdgeFlag => false,
                     }
             }
@@ -1291,7 +1301,7 @@ fn light_model_values(pname: GLenum) -> usize {
 }
 
 /// The bytes a sequence's vertex arrays read, one buffer per array.
-struct ArrayBytes([Vec<u8>; 7]);
+struct ArrayBytes([Vec<u8>; 8]);
 
 impl ArrayBytes {
     /// Random contents; with `finite`, every float or double read at any offset is finite.
@@ -1869,6 +1879,7 @@ fn apply(
                 ctx.secondary_color_pointer(*size, *component_type, *stride, *address)
             }
             ArrayKind::FogCoord => ctx.fog_coord_pointer(*component_type, *stride, *address),
+            ArrayKind::Index => ctx.index_pointer(*component_type, *stride, *address),
         },
         Op::ClientState { array, enabled } => ctx.client_state(*array, *enabled),
         Op::InterleavedArrays {

@@ -107,6 +107,12 @@ pub extern "C" fn glSecondaryColorPointer(
 
 /// `ptr` must stay valid, holding the elements later draws use, until it is replaced.
 #[unsafe(no_mangle)]
+pub extern "C" fn glIndexPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+    with_context(|ctx| ctx.index_pointer(type_, stride, ptr as usize))
+}
+
+/// `ptr` must stay valid, holding the elements later draws use, until it is replaced.
+#[unsafe(no_mangle)]
 pub extern "C" fn glFogCoordPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) {
     with_context(|ctx| ctx.fog_coord_pointer(type_, stride, ptr as usize))
 }

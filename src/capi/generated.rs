@@ -893,3 +893,93 @@ pub unsafe extern "C" fn glGetQueryObjectuiv(id: GLuint, pname: GLenum, params: 
         unsafe { write(params, &written[..]) }
     })
 }
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glIndexd(c: GLdouble) {
+    with_context(|ctx| {
+        { ctx.index(c as f32); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `c` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glIndexdv(c: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let c = unsafe { read(c, 1) };
+        ctx.index_v(c)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glIndexf(c: GLfloat) {
+    with_context(|ctx| {
+        { ctx.index(c); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `c` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glIndexfv(c: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let c = unsafe { read(c, 1) };
+        ctx.index_v(c)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glIndexi(c: GLint) {
+    with_context(|ctx| {
+        { ctx.index(c as f32); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `c` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glIndexiv(c: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let c = unsafe { read(c, 1) };
+        ctx.index_v(c)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glIndexs(c: GLshort) {
+    with_context(|ctx| {
+        { ctx.index(c as f32); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `c` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glIndexsv(c: *const GLshort) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let c = unsafe { read(c, 1) };
+        ctx.index_v(c)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glIndexub(c: GLubyte) {
+    with_context(|ctx| {
+        { ctx.index(c as f32); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `c` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glIndexubv(c: *const GLubyte) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let c = unsafe { read(c, 1) };
+        ctx.index_v(c)
+    })
+}

@@ -139,6 +139,7 @@ struct Element {
     edge_flag: Option<bool>,
     secondary_color: Option<[f32; 3]>,
     fog_coord: Option<f32>,
+    index: Option<f32>,
 }
 
 /// Decodes elements of the enabled arrays from sources checked to hold them.
@@ -191,6 +192,7 @@ impl<'a> ArrayReader<'a> {
                 .read(ArrayKind::SecondaryColor, index)
                 .map(|c| [c[0], c[1], c[2]]),
             fog_coord: self.read(ArrayKind::FogCoord, index).map(|f| f[0]),
+            index: self.read(ArrayKind::Index, index).map(|i| i[0]),
         }
     }
 }
@@ -280,6 +282,17 @@ impl Context {
             stride,
             address,
         )
+    }
+
+    /// glIndexPointer.
+    pub fn index_pointer(
+        &mut self,
+        component_type: GLenum,
+        stride: i32,
+        address: usize,
+    ) -> GlResult {
+        self.arrays
+            .set_pointer(ArrayKind::Index, 1, component_type, stride, address)
     }
 
     /// glFogCoordPointer (GL 1.4).
@@ -429,6 +442,9 @@ impl Context {
         }
         if let Some(secondary_color) = element.secondary_color {
             self.secondary_color(secondary_color);
+        }
+        if let Some(color_index) = element.index {
+            self.index(color_index);
         }
         if let Some(normal) = element.normal {
             self.normal(normal);

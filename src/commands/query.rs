@@ -176,6 +176,10 @@ impl Context {
             GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING => {
                 int(self.arrays.get(ArrayKind::SecondaryColor).buffer as i32)
             }
+            GL_INDEX_ARRAY_TYPE => enumeration(self.arrays.get(ArrayKind::Index).component_type),
+            GL_INDEX_ARRAY_STRIDE => int(self.arrays.get(ArrayKind::Index).stride),
+            GL_INDEX_ARRAY_BUFFER_BINDING => int(self.arrays.get(ArrayKind::Index).buffer as i32),
+            GL_CURRENT_INDEX => floats(&[self.current.index]),
             GL_FOG_COORD_ARRAY_TYPE => {
                 enumeration(self.arrays.get(ArrayKind::FogCoord).component_type)
             }

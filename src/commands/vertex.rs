@@ -34,6 +34,18 @@ impl Context {
         Ok(())
     }
 
+    /// glIndex (§2.7): the current color index, which RGBA mode never uses.
+    pub fn index(&mut self, index: f32) {
+        self.current.index = index;
+    }
+
+    /// glIndexv: GL_INVALID_VALUE for a NULL (empty) vector.
+    pub fn index_v<T: Component>(&mut self, v: &[T]) -> GlResult {
+        let [index]: [T; 1] = v.try_into().map_err(|_| GlError::InvalidValue)?;
+        self.index(index.direct());
+        Ok(())
+    }
+
     /// glFogCoord (§2.7).
     pub fn fog_coord(&mut self, coord: f32) {
         self.current.fog_coord = coord;

@@ -132,8 +132,8 @@ impl<'a> ArrayFetch<'a> {
                 ArrayKind::TexCoord => &mut block.tex_coord,
                 ArrayKind::SecondaryColor => &mut block.secondary_color,
                 ArrayKind::EdgeFlag => &mut edge_flags,
-                // The fog coordinate reaches nothing vertex processing computes.
-                ArrayKind::FogCoord => continue,
+                // Fog coordinates and color indices reach nothing an RGBA vertex computes.
+                ArrayKind::FogCoord | ArrayKind::Index => continue,
             };
             for (offset, &index) in offsets.iter_mut().zip(indices) {
                 *offset = (index - self.base) * source.stride;

@@ -15,6 +15,8 @@ pub struct CurrentAttribs {
     pub edge_flag: bool,
     /// The current fog coordinate (§2.7): raster distance with GL_FOG_COORD as fog source.
     pub fog_coord: f32,
+    /// The current color index (§2.7): kept and queried, unused in RGBA mode.
+    pub index: f32,
 }
 
 impl Default for CurrentAttribs {
@@ -27,6 +29,7 @@ impl Default for CurrentAttribs {
             tex_coord: Vec4::W,
             edge_flag: true,
             fog_coord: 0.0,
+            index: 1.0,
         }
     }
 }

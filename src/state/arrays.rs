@@ -16,10 +16,12 @@ pub enum ArrayKind {
     EdgeFlag,
     SecondaryColor,
     FogCoord,
+    /// Color indices: made current by glArrayElement, used by nothing in RGBA mode.
+    Index,
 }
 
 /// How many arrays there are.
-pub const ARRAY_KINDS: usize = 7;
+pub const ARRAY_KINDS: usize = 8;
 
 /// Every array, in storage order.
 pub const ALL_KINDS: [ArrayKind; ARRAY_KINDS] = [
@@ -30,10 +32,11 @@ pub const ALL_KINDS: [ArrayKind; ARRAY_KINDS] = [
     ArrayKind::EdgeFlag,
     ArrayKind::SecondaryColor,
     ArrayKind::FogCoord,
+    ArrayKind::Index,
 ];
 
 impl ArrayKind {
-    /// The array glEnableClientState names; `None` for GL_INDEX_ARRAY and unknown names.
+    /// The array glEnableClientState names; `None` for unknown names.
     pub fn of_client_state(array: GLenum) -> Option<ArrayKind> {
         Some(match array {
             GL_VERTEX_ARRAY => ArrayKind::Vertex,
@@ -43,6 +46,7 @@ impl ArrayKind {
             GL_EDGE_FLAG_ARRAY => ArrayKind::EdgeFlag,
             GL_SECONDARY_COLOR_ARRAY => ArrayKind::SecondaryColor,
             GL_FOG_COORD_ARRAY => ArrayKind::FogCoord,
+            GL_INDEX_ARRAY => ArrayKind::Index,
             _ => return None,
         })
     }
@@ -57,6 +61,7 @@ impl ArrayKind {
             GL_EDGE_FLAG_ARRAY_POINTER => ArrayKind::EdgeFlag,
             GL_SECONDARY_COLOR_ARRAY_POINTER => ArrayKind::SecondaryColor,
             GL_FOG_COORD_ARRAY_POINTER => ArrayKind::FogCoord,
+            GL_INDEX_ARRAY_POINTER => ArrayKind::Index,
             _ => return None,
         })
     }
@@ -78,6 +83,10 @@ impl ArrayKind {
             }
             ArrayKind::EdgeFlag => component_type == GL_UNSIGNED_BYTE,
             ArrayKind::FogCoord => matches!(component_type, GL_FLOAT | GL_DOUBLE),
+            ArrayKind::Index => matches!(
+                component_type,
+                GL_UNSIGNED_BYTE | GL_SHORT | GL_INT | GL_FLOAT | GL_DOUBLE
+            ),
         }
     }
 
@@ -88,7 +97,7 @@ impl ArrayKind {
             ArrayKind::Normal => size == 3,
             ArrayKind::Color => (3..=4).contains(&size),
             ArrayKind::TexCoord => (1..=4).contains(&size),
-            ArrayKind::EdgeFlag | ArrayKind::FogCoord => size == 1,
+            ArrayKind::EdgeFlag | ArrayKind::FogCoord | ArrayKind::Index => size == 1,
             ArrayKind::SecondaryColor => size == 3,
         }
     }
@@ -222,9 +231,6 @@ pub struct ByteSpan {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct VertexArrays {
     arrays: [ClientArray; ARRAY_KINDS],
-    /// GL_INDEX_ARRAY's enable: fflight has no color index mode, so it is only stored for
-    /// glIsEnabled.
-    pub index_enabled: bool,
     /// The buffer objects bound to GL_ARRAY_BUFFER (copied into each array whose pointer is
     /// set) and GL_ELEMENT_ARRAY_BUFFER (where glDrawElements finds its indices).
     pub array_buffer: u32,
@@ -242,8 +248,8 @@ impl Default for VertexArrays {
                 ClientArray::initial(1, GL_UNSIGNED_BYTE),
                 ClientArray::initial(3, GL_FLOAT),
                 ClientArray::initial(1, GL_FLOAT),
+                ClientArray::initial(1, GL_FLOAT),
             ],
-            index_enabled: false,
             array_buffer: 0,
             element_array_buffer: 0,
         }
@@ -293,7 +299,6 @@ impl VertexArrays {
     pub fn set_enabled(&mut self, array: GLenum, enabled: bool) -> GlResult {
         match ArrayKind::of_client_state(array) {
             Some(kind) => self.arrays[kind as usize].enabled = enabled,
-            None if array == GL_INDEX_ARRAY => self.index_enabled = enabled,
             None => return Err(GlError::InvalidEnum),
         }
         Ok(())
@@ -301,10 +306,7 @@ impl VertexArrays {
 
     /// Whether a client-state array is enabled; `None` if `array` names none.
     pub fn is_enabled(&self, array: GLenum) -> Option<bool> {
-        match ArrayKind::of_client_state(array) {
-            Some(kind) => Some(self.get(kind).enabled),
-            None => (array == GL_INDEX_ARRAY).then_some(self.index_enabled),
-        }
+        ArrayKind::of_client_state(array).map(|kind| self.get(kind).enabled)
     }
 
     /// The enabled arrays, with their kinds.
@@ -358,9 +360,9 @@ impl VertexArrays {
                 address.wrapping_add(offset)
             }
         };
-        self.index_enabled = false;
         for kind in [
             ArrayKind::EdgeFlag,
+            ArrayKind::Index,
             ArrayKind::SecondaryColor,
             ArrayKind::FogCoord,
         ] {

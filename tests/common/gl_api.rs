@@ -103,6 +103,12 @@ unsafe extern "C" {
     pub fn glEdgeFlagPointer(stride: GLsizei, ptr: *const c_void);
     pub fn glSecondaryColorPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c_void);
     pub fn glFogCoordPointer(ty: GLenum, stride: GLsizei, ptr: *const c_void);
+    pub fn glIndexPointer(ty: GLenum, stride: GLsizei, ptr: *const c_void);
+    pub fn glIndexubv(v: *const GLubyte);
+    pub fn glIndexsv(v: *const GLshort);
+    pub fn glIndexiv(v: *const GLint);
+    pub fn glIndexfv(v: *const GLfloat);
+    pub fn glIndexdv(v: *const GLdouble);
     pub fn glSecondaryColor3bv(v: *const GLbyte);
     pub fn glSecondaryColor3ubv(v: *const GLubyte);
     pub fn glSecondaryColor3sv(v: *const GLshort);
