@@ -83,7 +83,11 @@ pub struct Context {
     /// The address glFeedbackBuffer was given: only the C layer writes through it.
     pub(crate) feedback_address: usize,
     pub(crate) selection: crate::pipeline::select::Selection,
-    pub(crate) primitive: Option<PrimitiveInProgress>,
+    /// Boxed: it moves out of the context and back for every block it processes.
+    pub(crate) primitive: Option<Box<PrimitiveInProgress>>,
+    /// The lit block a draw streams from, kept between blocks (it is large, and every field
+    /// is rewritten for each block).
+    pub(crate) lit_block: Option<Box<crate::pipeline::block::OutputBlock>>,
     pub(crate) arrays: crate::state::arrays::VertexArrays,
     pub(crate) buffers: crate::state::buffers::BufferObjects,
     pub(crate) queries: crate::state::queries::QueryObjects,
@@ -132,6 +136,7 @@ impl Context {
             feedback_address: 0,
             selection: Default::default(),
             primitive: None,
+            lit_block: None,
             arrays: Default::default(),
             buffers: Default::default(),
             queries: Default::default(),

@@ -80,10 +80,10 @@ impl Context {
             return Err(GlError::InvalidEnum);
         }
         let stream = self.begin_stream(mode);
-        self.primitive = Some(PrimitiveInProgress {
+        self.primitive = Some(Box::new(PrimitiveInProgress {
             pending: InputBlock::default(),
             stream,
-        });
+        }));
         Ok(())
     }
 

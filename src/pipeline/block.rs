@@ -70,6 +70,8 @@ impl InputBlock {
     /// Appends a vertex at `position` with `attribs`.
     pub fn push(&mut self, position: Vec4, attribs: &CurrentAttribs) {
         let lane = self.len;
+        // Once here, not in every store below.
+        assert!(lane < LANES, "a full block takes no more vertices");
         self.set_position(lane, position);
         self.set_normal(lane, attribs.normal);
         self.set_color(lane, attribs.color);

@@ -132,9 +132,14 @@ impl Context {
         derived: &DerivedState,
         input: &InputBlock,
     ) {
-        let mut output = [OutputBlock::default()];
-        process_blocks(derived, std::slice::from_ref(input), &mut output);
-        self.stream_lit_block(stream, &output[0]);
+        let mut output = self.lit_block.take().unwrap_or_default();
+        process_blocks(
+            derived,
+            std::slice::from_ref(input),
+            std::slice::from_mut(&mut output),
+        );
+        self.stream_lit_block(stream, &output);
+        self.lit_block = Some(output);
     }
 
     /// Streams a processed block's vertices into the draw, in order.
