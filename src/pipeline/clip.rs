@@ -194,18 +194,17 @@ pub fn clip_triangle(
 ) -> bool {
     polygon.clear();
     let masks = triangle.map(|v| planes.outside_mask(v));
-    polygon.extend((0..3).map(|i| PolygonVertex {
-        vertex: *triangle[i],
-        boundary: boundary[i],
-    }));
     if masks[0] & masks[1] & masks[2] != 0 {
-        polygon.clear();
         return true;
     }
     let planes_crossed = masks[0] | masks[1] | masks[2];
     if planes_crossed == 0 {
         return false;
     }
+    polygon.extend((0..3).map(|i| PolygonVertex {
+        vertex: *triangle[i],
+        boundary: boundary[i],
+    }));
     let mut output = Vec::with_capacity(polygon.len() + 2);
     for plane in (0..planes.count()).filter(|p| planes_crossed & 1 << p != 0) {
         if polygon.len() < 3 {

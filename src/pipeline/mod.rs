@@ -233,12 +233,15 @@ impl Context {
                 edge_flags,
                 reset,
             } => {
-                let mut corners = [*window.get(a), *window.get(b), *window.get(c)];
-                if !edge_flags {
+                let mut owned: [ProcessedVertex; 3];
+                let [a, b, c] = if edge_flags {
+                    [window.get(a), window.get(b), window.get(c)]
+                } else {
                     // Strips and fans draw every edge whatever the edge flags (§2.6.2).
-                    corners.iter_mut().for_each(|v| v.edge_flag = true);
-                }
-                let [a, b, c] = &corners;
+                    owned = [*window.get(a), *window.get(b), *window.get(c)];
+                    owned.iter_mut().for_each(|v| v.edge_flag = true);
+                    [&owned[0], &owned[1], &owned[2]]
+                };
                 if clip_triangle(planes, [a, b, c], boundary, polygon) {
                     self.feedback_polygon(polygon, c);
                 } else {
