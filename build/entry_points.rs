@@ -26,6 +26,19 @@
 //! `GlResult<R>` for a function returning `R`, or, with an `out` parameter, a `GlResult` of the
 //! values to write there. `use` lines are copied to the top of the generated file; `#` lines
 //! and blank lines are comments.
+//!
+//! A line that starts with `list` is a command display lists compile (§5.4):
+//!
+//! ```text
+//! list void glFogfv(GLenum pname, const GLfloat *params[fog_param_count(pname).unwrap_or(0)]) => ctx.fog(pname, params)
+//! ```
+//!
+//! The generator also writes a variant of `TableCommand` for it, holding its scalar
+//! parameters and a copy of the values each pointer parameter reads (read at compile time, as
+//! §5.4 says), and an arm of `TableCommand::execute` that runs the same expression on them.
+//! While a list is being compiled the entry point records that variant instead of running
+//! (GL_COMPILE) or as well (GL_COMPILE_AND_EXECUTE); see src/commands/list.rs. Such a
+//! command returns nothing and writes nothing back: a query is never compiled.
 
 use std::fmt::Write as _;
 
@@ -48,6 +61,8 @@ struct Parameter {
 
 struct EntryPoint {
     docs: Vec<String>,
+    /// Compiled into display lists (the line starts with `list`).
+    recordable: bool,
     name: String,
     returns: Option<String>,
     parameters: Vec<Parameter>,
@@ -131,6 +146,10 @@ fn parse_parameter(text: &str) -> Result<Parameter, String> {
 }
 
 fn parse_entry_point(line: &str, docs: Vec<String>) -> Result<EntryPoint, String> {
+    let (recordable, line) = match line.strip_prefix("list ") {
+        Some(rest) => (true, rest.trim_start()),
+        None => (false, line),
+    };
     let (declaration, body) = line.split_once("=>").ok_or("no `=>`")?;
     let open = declaration.find('(').ok_or("no `(`")?;
     let close = declaration.rfind(')').ok_or("no `)`")?;
@@ -162,8 +181,17 @@ fn parse_entry_point(line: &str, docs: Vec<String>) -> Result<EntryPoint, String
     if returns.is_some() && parameters.iter().any(|p| p.pointer == Some(Pointer::Out)) {
         return Err("a function with a result cannot also have an `[out]` parameter".into());
     }
+    if recordable
+        && (returns.is_some()
+            || parameters
+                .iter()
+                .any(|p| matches!(p.pointer, Some(Pointer::Out | Pointer::Fill(_)))))
+    {
+        return Err("a `list` command returns nothing and writes nothing back".into());
+    }
     Ok(EntryPoint {
         docs,
+        recordable,
         name: name.to_string(),
         returns,
         parameters,
@@ -230,6 +258,25 @@ fn write_entry_point(out: &mut String, entry: &EntryPoint) {
             name = p.name
         );
     }
+    if entry.recordable {
+        let fields: Vec<String> = entry
+            .parameters
+            .iter()
+            .map(|p| match p.pointer {
+                Some(_) => format!("{}: {}.to_vec()", p.name, p.name),
+                None => p.name.clone(),
+            })
+            .collect();
+        let _ = writeln!(
+            out,
+            "        if ctx.record(|| TableCommand::{} {{ {} }}.into()) {{
+            \
+             return Ok(());
+        }}",
+            entry.name,
+            fields.join(", ")
+        );
+    }
     match pointers.iter().find(|p| p.pointer == Some(Pointer::Out)) {
         Some(written) => {
             let _ = writeln!(
@@ -245,6 +292,70 @@ fn write_entry_point(out: &mut String, entry: &EntryPoint) {
         }
     }
     out.push_str("    })\n}\n\n");
+}
+
+/// `TableCommand`, one variant per `list` line, and its `execute`: the line's expression on
+/// the recorded values.
+fn write_table_commands(out: &mut String, entries: &[EntryPoint]) {
+    let recordable: Vec<&EntryPoint> = entries.iter().filter(|e| e.recordable).collect();
+    if recordable.is_empty() {
+        return;
+    }
+    out.push_str(
+        "/// A command of the table compiled into a display list: its parameters, and a copy \
+         of the\n/// values its pointers gave at compile time.\n\
+         #[allow(non_camel_case_types)]\n#[derive(Clone, Debug, PartialEq)]\n\
+         pub enum TableCommand {\n",
+    );
+    for entry in &recordable {
+        let fields: Vec<String> = entry
+            .parameters
+            .iter()
+            .map(|p| match p.pointer {
+                Some(_) => format!("{}: Vec<{}>", p.name, pointee(&p.rust_type)),
+                None => format!("{}: {}", p.name, p.rust_type),
+            })
+            .collect();
+        let _ = writeln!(out, "    {}{},", entry.name, braced(&fields));
+    }
+    out.push_str(
+        "}\n\nimpl TableCommand {\n    \
+         /// Runs the command as its entry point would, on the recorded values.\n    \
+         pub fn execute(&self, ctx: &mut Context) -> GlResult {\n        match self {\n",
+    );
+    for entry in &recordable {
+        let names: Vec<String> = entry.parameters.iter().map(|p| p.name.clone()).collect();
+        let _ = writeln!(
+            out,
+            "            TableCommand::{}{} => {{",
+            entry.name,
+            braced(&names)
+        );
+        for p in &entry.parameters {
+            let _ = match p.pointer {
+                Some(_) => writeln!(out, "                let {0} = &{0}[..];", p.name),
+                None => writeln!(out, "                let {0} = *{0};", p.name),
+            };
+        }
+        let _ = writeln!(out, "                {}\n            }}", entry.body);
+    }
+    out.push_str("        }\n    }\n}\n");
+}
+
+/// ` { a, b }`, or ` {}` for no fields.
+fn braced(fields: &[String]) -> String {
+    if fields.is_empty() {
+        " {}".into()
+    } else {
+        format!(" {{ {} }}", fields.join(", "))
+    }
+}
+
+/// The type a pointer type points to (`*const GLfloat` -> `GLfloat`).
+fn pointee(rust_type: &str) -> &str {
+    rust_type
+        .trim_start_matches("*const ")
+        .trim_start_matches("*mut ")
 }
 
 /// The Rust source for the table `table`, or the first line it cannot read.
@@ -295,6 +406,9 @@ pub fn generate(table: &str) -> Result<String, String> {
         out.push_str("use std::ffi::c_void;\n");
     }
     out.push_str("use crate::gl::*;\n");
+    if entries.iter().any(|e| e.recordable) {
+        out.push_str("use crate::context::Context;\nuse crate::error::GlResult;\n");
+    }
     for u in &uses {
         let _ = writeln!(out, "{u}");
     }
@@ -302,6 +416,7 @@ pub fn generate(table: &str) -> Result<String, String> {
     for entry in &entries {
         write_entry_point(&mut out, entry);
     }
+    write_table_commands(&mut out, &entries);
     out.truncate(out.trim_end().len());
     out.push('\n');
     Ok(out)

@@ -578,6 +578,42 @@ typedef struct FflCapturedPrimitive {
 #define GL_MAX_NAME_STACK_DEPTH 3383
 #endif
 
+#ifndef GL_COMPILE
+#define GL_COMPILE 4864
+#endif
+
+#ifndef GL_COMPILE_AND_EXECUTE
+#define GL_COMPILE_AND_EXECUTE 4865
+#endif
+
+#ifndef GL_LIST_BASE
+#define GL_LIST_BASE 2866
+#endif
+
+#ifndef GL_LIST_INDEX
+#define GL_LIST_INDEX 2867
+#endif
+
+#ifndef GL_LIST_MODE
+#define GL_LIST_MODE 2864
+#endif
+
+#ifndef GL_MAX_LIST_NESTING
+#define GL_MAX_LIST_NESTING 2865
+#endif
+
+#ifndef GL_2_BYTES
+#define GL_2_BYTES 5127
+#endif
+
+#ifndef GL_3_BYTES
+#define GL_3_BYTES 5128
+#endif
+
+#ifndef GL_4_BYTES
+#define GL_4_BYTES 5129
+#endif
+
 #ifndef GL_SHADE_MODEL
 #define GL_SHADE_MODEL 2900
 #endif
@@ -2648,14 +2684,6 @@ void fflSetThreads(GLint count);
  */
 GLint fflGetThreads(void);
 
-void glBegin(GLenum mode);
-
-void glEnd(void);
-
-void glViewport(GLint x, GLint y, GLsizei width, GLsizei height);
-
-void glDepthRange(GLclampd near, GLclampd far);
-
 /*
  `buffer` must have room for `size` floats whenever the context is in feedback mode until
  glFeedbackBuffer is called again: fed-back values are written straight into it, and
@@ -2669,8 +2697,6 @@ void glFeedbackBuffer(GLsizei size, GLenum kind, GLfloat *buffer);
  */
 GLint glRenderMode(GLenum mode);
 
-void glPassThrough(GLfloat token);
-
 /*
  Every command has finished when it returns: there is nothing to flush.
  */
@@ -2680,6 +2706,196 @@ void glFlush(void);
  Every command has finished when it returns: there is nothing to wait for.
  */
 void glFinish(void);
+
+void glBegin(GLenum mode);
+
+void glEnd(void);
+
+void glViewport(GLint x, GLint y, GLsizei width, GLsizei height);
+
+void glDepthRange(GLclampd near, GLclampd far);
+
+void glLightf(GLenum light, GLenum pname, GLfloat param);
+
+void glLighti(GLenum light, GLenum pname, GLint param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glLightfv(GLenum light, GLenum pname, const GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glLightiv(GLenum light, GLenum pname, const GLint *params);
+
+void glMaterialf(GLenum face, GLenum pname, GLfloat param);
+
+void glMateriali(GLenum face, GLenum pname, GLint param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glMaterialfv(GLenum face, GLenum pname, const GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glMaterialiv(GLenum face, GLenum pname, const GLint *params);
+
+void glLightModelf(GLenum pname, GLfloat param);
+
+void glLightModeli(GLenum pname, GLint param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glLightModelfv(GLenum pname, const GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glLightModeliv(GLenum pname, const GLint *params);
+
+void glColorMaterial(GLenum face, GLenum mode);
+
+void glEnable(GLenum cap);
+
+void glDisable(GLenum cap);
+
+void glMatrixMode(GLenum mode);
+
+void glLoadIdentity(void);
+
+/*
+ # Safety
+ `m` is NULL or points to the values the command reads.
+ */
+void glLoadMatrixf(const GLfloat *m);
+
+/*
+ # Safety
+ `m` is NULL or points to the values the command reads.
+ */
+void glLoadMatrixd(const GLdouble *m);
+
+/*
+ # Safety
+ `m` is NULL or points to the values the command reads.
+ */
+void glMultMatrixf(const GLfloat *m);
+
+/*
+ # Safety
+ `m` is NULL or points to the values the command reads.
+ */
+void glMultMatrixd(const GLdouble *m);
+
+/*
+ # Safety
+ `m` is NULL or points to the values the command reads.
+ */
+void glLoadTransposeMatrixf(const GLfloat m[16]);
+
+/*
+ # Safety
+ `m` is NULL or points to the values the command reads.
+ */
+void glLoadTransposeMatrixd(const GLdouble m[16]);
+
+/*
+ # Safety
+ `m` is NULL or points to the values the command reads.
+ */
+void glMultTransposeMatrixf(const GLfloat m[16]);
+
+/*
+ # Safety
+ `m` is NULL or points to the values the command reads.
+ */
+void glMultTransposeMatrixd(const GLdouble m[16]);
+
+void glTranslatef(GLfloat x, GLfloat y, GLfloat z);
+
+void glTranslated(GLdouble x, GLdouble y, GLdouble z);
+
+void glRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z);
+
+void glRotated(GLdouble angle, GLdouble x, GLdouble y, GLdouble z);
+
+void glScalef(GLfloat x, GLfloat y, GLfloat z);
+
+void glScaled(GLdouble x, GLdouble y, GLdouble z);
+
+void glFrustum(GLdouble left,
+               GLdouble right,
+               GLdouble bottom,
+               GLdouble top,
+               GLdouble near,
+               GLdouble far);
+
+void glOrtho(GLdouble left,
+             GLdouble right,
+             GLdouble bottom,
+             GLdouble top,
+             GLdouble near,
+             GLdouble far);
+
+void glPushMatrix(void);
+
+void glPopMatrix(void);
+
+/*
+ # Safety
+ `equation` is NULL or points to the values the command reads.
+ */
+void glClipPlane(GLenum plane, const GLdouble *equation);
+
+void glShadeModel(GLenum mode);
+
+void glFrontFace(GLenum mode);
+
+void glCullFace(GLenum mode);
+
+void glPolygonMode(GLenum face, GLenum mode);
+
+void glRectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2);
+
+void glRectd(GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2);
+
+void glRecti(GLint x1, GLint y1, GLint x2, GLint y2);
+
+void glRects(GLshort x1, GLshort y1, GLshort x2, GLshort y2);
+
+void glInitNames(void);
+
+void glPushName(GLuint name);
+
+void glPopName(void);
+
+void glLoadName(GLuint name);
+
+void glPassThrough(GLfloat token);
+
+GLuint glGenLists(GLsizei range);
+
+void glNewList(GLuint list, GLenum mode);
+
+void glEndList(void);
+
+void glDeleteLists(GLuint list, GLsizei range);
+
+GLboolean glIsList(GLuint list);
+
+void glCallList(GLuint list);
+
+void glListBase(GLuint base);
 
 void glPointSize(GLfloat size);
 
@@ -3111,22 +3327,6 @@ void glIndexub(GLubyte c);
  */
 void glIndexubv(const GLubyte *c);
 
-void glLightf(GLenum light, GLenum pname, GLfloat param);
-
-void glLighti(GLenum light, GLenum pname, GLint param);
-
-/*
- # Safety
- `params` is NULL or holds the values `pname` defines.
- */
-void glLightfv(GLenum light, GLenum pname, const GLfloat *params);
-
-/*
- # Safety
- `params` is NULL or holds the values `pname` defines.
- */
-void glLightiv(GLenum light, GLenum pname, const GLint *params);
-
 /*
  # Safety
  `params` is NULL or has room for the values `pname` defines.
@@ -3138,22 +3338,6 @@ void glGetLightfv(GLenum light, GLenum pname, GLfloat *params);
  `params` is NULL or has room for the values `pname` defines.
  */
 void glGetLightiv(GLenum light, GLenum pname, GLint *params);
-
-void glMaterialf(GLenum face, GLenum pname, GLfloat param);
-
-void glMateriali(GLenum face, GLenum pname, GLint param);
-
-/*
- # Safety
- `params` is NULL or holds the values `pname` defines.
- */
-void glMaterialfv(GLenum face, GLenum pname, const GLfloat *params);
-
-/*
- # Safety
- `params` is NULL or holds the values `pname` defines.
- */
-void glMaterialiv(GLenum face, GLenum pname, const GLint *params);
 
 /*
  # Safety
@@ -3167,111 +3351,16 @@ void glGetMaterialfv(GLenum face, GLenum pname, GLfloat *params);
  */
 void glGetMaterialiv(GLenum face, GLenum pname, GLint *params);
 
-void glLightModelf(GLenum pname, GLfloat param);
-
-void glLightModeli(GLenum pname, GLint param);
-
-/*
- # Safety
- `params` is NULL or holds the values `pname` defines.
- */
-void glLightModelfv(GLenum pname, const GLfloat *params);
-
-/*
- # Safety
- `params` is NULL or holds the values `pname` defines.
- */
-void glLightModeliv(GLenum pname, const GLint *params);
-
-void glColorMaterial(GLenum face, GLenum mode);
-
-void glEnable(GLenum cap);
-
-void glDisable(GLenum cap);
-
 GLboolean glIsEnabled(GLenum cap);
 
-void glMatrixMode(GLenum mode);
-
-void glLoadIdentity(void);
-
 /*
+ While a list is being compiled, the offsets are read then and compiled; the list base is
+ the one in force when the list executes.
+
  # Safety
- `m` is NULL or points to 16 values.
+ `lists` is NULL or points to `n` names of `type_`.
  */
-void glLoadMatrixf(const GLfloat *m);
-
-/*
- # Safety
- `m` is NULL or points to 16 values.
- */
-void glLoadMatrixd(const GLdouble *m);
-
-/*
- # Safety
- `m` is NULL or points to 16 values.
- */
-void glMultMatrixf(const GLfloat *m);
-
-/*
- # Safety
- `m` is NULL or points to 16 values.
- */
-void glMultMatrixd(const GLdouble *m);
-
-/*
- # Safety
- `m` is NULL or points to 16 values.
- */
-void glLoadTransposeMatrixf(const GLfloat m[16]);
-
-/*
- # Safety
- `m` is NULL or points to 16 values.
- */
-void glLoadTransposeMatrixd(const GLdouble m[16]);
-
-/*
- # Safety
- `m` is NULL or points to 16 values.
- */
-void glMultTransposeMatrixf(const GLfloat m[16]);
-
-/*
- # Safety
- `m` is NULL or points to 16 values.
- */
-void glMultTransposeMatrixd(const GLdouble m[16]);
-
-void glTranslatef(GLfloat x, GLfloat y, GLfloat z);
-
-void glTranslated(GLdouble x, GLdouble y, GLdouble z);
-
-void glRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z);
-
-void glRotated(GLdouble angle, GLdouble x, GLdouble y, GLdouble z);
-
-void glScalef(GLfloat x, GLfloat y, GLfloat z);
-
-void glScaled(GLdouble x, GLdouble y, GLdouble z);
-
-void glFrustum(GLdouble left,
-               GLdouble right,
-               GLdouble bottom,
-               GLdouble top,
-               GLdouble near,
-               GLdouble far);
-
-void glOrtho(GLdouble left,
-             GLdouble right,
-             GLdouble bottom,
-             GLdouble top,
-             GLdouble near,
-             GLdouble far);
-
-void glPushMatrix(void);
-
-void glPopMatrix(void);
+void glCallLists(GLsizei n, GLenum type_, const void *lists);
 
 GLenum glGetError(void);
 
@@ -3306,31 +3395,9 @@ const GLubyte *glGetString(GLenum name);
 
 /*
  # Safety
- `equation` is NULL or points to 4 values.
- */
-void glClipPlane(GLenum plane, const GLdouble *equation);
-
-/*
- # Safety
  `equation` is NULL or has room for 4 values.
  */
 void glGetClipPlane(GLenum plane, GLdouble *equation);
-
-void glShadeModel(GLenum mode);
-
-void glFrontFace(GLenum mode);
-
-void glCullFace(GLenum mode);
-
-void glPolygonMode(GLenum face, GLenum mode);
-
-void glRectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2);
-
-void glRectd(GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2);
-
-void glRecti(GLint x1, GLint y1, GLint x2, GLint y2);
-
-void glRects(GLshort x1, GLshort y1, GLshort x2, GLshort y2);
 
 void glRasterPos2s(GLshort x, GLshort y);
 
@@ -3432,14 +3499,6 @@ void glRasterPos4dv(const GLdouble *v);
  `buffer` must have room for `size` unsigned integers until glRenderMode ends selection.
  */
 void glSelectBuffer(GLsizei size, GLuint *buffer);
-
-void glInitNames(void);
-
-void glPushName(GLuint name);
-
-void glPopName(void);
-
-void glLoadName(GLuint name);
 
 #ifdef __cplusplus
 }  // extern "C"

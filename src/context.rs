@@ -94,6 +94,7 @@ pub struct Context {
     pub(crate) capture: crate::pipeline::capture::Capture,
     derived: Option<Arc<DerivedState>>,
     pub(crate) vertex_cache: crate::pipeline::vertex_cache::VertexCache,
+    pub(crate) lists: crate::commands::list::DisplayLists,
 }
 
 impl Default for Context {
@@ -143,6 +144,7 @@ impl Context {
             capture: Default::default(),
             derived: None,
             vertex_cache: Default::default(),
+            lists: Default::default(),
         }
     }
 

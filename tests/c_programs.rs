@@ -927,6 +927,11 @@ c_programs!(
     state_points_lines_polygons,
     state_pixels,
     osmesa_diff_buffers_and_factors,
+    dlist_compile_call,
+    dlist_nesting,
+    dlist_call_lists,
+    dlist_arrays,
+    dlist_errors,
 );
 
 /// The line-reset rule accepts exactly fflight `line_reset` vs OSMesa `line`

@@ -16,11 +16,16 @@
 //! GL_INVALID_OPERATION, nothing is drawn. Address arithmetic that would overflow is
 //! GL_INVALID_VALUE; a draw whose vertices do not fit in memory is GL_OUT_OF_MEMORY (before
 //! any array element is read).
+//!
+//! While a display list is being compiled, glArrayElement and the draws read the elements
+//! they use then (§5.4) and compile a copy of them; an error of their checks is compiled in
+//! their place, raised when the list executes.
 
 use std::ffi::c_void;
 
 use super::{read, with_context};
 use crate::commands::arrays::{ArraySources, ElementIndices};
+use crate::commands::list::Command;
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
@@ -43,19 +48,32 @@ unsafe fn sources<'a>(base: usize, spans: &[Option<ByteSpan>; ARRAY_KINDS]) -> A
     sources
 }
 
-/// Draws `indices` from the enabled arrays: reads exactly the bytes they reference.
+/// Draws `indices` from the enabled arrays, or compiles the draw: reads exactly the bytes
+/// they reference. `indices` is the result of the entry point's own checks.
 ///
 /// # Safety
 /// The enabled arrays' pointers must hold every element `indices` references.
-unsafe fn draw(ctx: &mut Context, mode: GLenum, indices: &ElementIndices) -> GlResult {
-    match ctx.array_spans(indices)? {
-        // SAFETY: forwarded from the caller.
-        Some((base, spans)) => {
-            ctx.draw_arrays_from(mode, &unsafe { sources(base, &spans) }, indices)
-        }
-        // Nothing is read; the call still validates as a draw.
-        None => ctx.draw_arrays_from(mode, &ArraySources::default(), indices),
+unsafe fn draw(ctx: &mut Context, mode: GLenum, indices: GlResult<ElementIndices>) -> GlResult {
+    let prepared = indices.and_then(|indices| {
+        let sources = match ctx.array_spans(&indices)? {
+            // SAFETY: forwarded from the caller.
+            Some((base, spans)) => unsafe { sources(base, &spans) },
+            // Nothing is read; the call still validates as a draw.
+            None => ArraySources::default(),
+        };
+        Ok((indices, sources))
+    });
+    let compiled = ctx.record_checked(|ctx| {
+        let (indices, sources) = prepared.as_ref().map_err(|e| *e)?;
+        Ok(Command::Draw(Box::new(
+            ctx.record_draw(mode, sources, indices)?,
+        )))
+    });
+    if compiled {
+        return Ok(());
     }
+    let (indices, sources) = prepared?;
+    ctx.draw_arrays_from(mode, &sources, &indices)
 }
 
 /// `ptr` must stay valid, holding the elements later draws use, until it is replaced.
@@ -153,11 +171,13 @@ pub unsafe extern "C" fn glGetPointerv(pname: GLenum, params: *mut *mut c_void) 
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn glArrayElement(i: GLint) {
     with_context(|ctx| {
-        let index = ctx.check_array_element(i)?;
-        let spans = ctx.vertex_arrays().spans(index, index)?;
-        // SAFETY: forwarded from the caller.
-        let sources = unsafe { sources(index, &spans) };
-        ctx.array_element_from(index, &sources)
+        let element = ctx.check_array_element(i).and_then(|index| {
+            let spans = ctx.vertex_arrays().spans(index, index)?;
+            // SAFETY: forwarded from the caller.
+            let sources = unsafe { sources(index, &spans) };
+            ctx.array_element_values(index, &sources)
+        });
+        ctx.record_or_run(element.map_or_else(Command::Error, Command::ArrayElement))
     })
 }
 
@@ -166,9 +186,9 @@ pub unsafe extern "C" fn glArrayElement(i: GLint) {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) {
     with_context(|ctx| {
-        let indices = ctx.check_draw_arrays(mode, first, count)?;
+        let indices = ctx.check_draw_arrays(mode, first, count);
         // SAFETY: forwarded from the caller.
-        unsafe { draw(ctx, mode, &indices) }
+        unsafe { draw(ctx, mode, indices) }
     })
 }
 
@@ -208,12 +228,9 @@ pub unsafe extern "C" fn glMultiDrawArrays(
         // SAFETY: forwarded from the caller.
         let (first, count) = unsafe { (read_list(first, n)?, read_list(count, n)?) };
         for (&first, &count) in first.iter().zip(count).filter(|(_, count)| **count > 0) {
-            let result = ctx
-                .check_draw_arrays(mode, first, count)
-                .and_then(|indices| {
-                    // SAFETY: forwarded from the caller.
-                    unsafe { draw(ctx, mode, &indices) }
-                });
+            let indices = ctx.check_draw_arrays(mode, first, count);
+            // SAFETY: forwarded from the caller.
+            let result = unsafe { draw(ctx, mode, indices) };
             record(ctx, result);
         }
         Ok(())
@@ -237,12 +254,9 @@ pub unsafe extern "C" fn glMultiDrawElements(
         // SAFETY: forwarded from the caller.
         let (count, indices) = unsafe { (read_list(count, n)?, read_list(indices, n)?) };
         for (&count, &indices) in count.iter().zip(indices).filter(|(count, _)| **count > 0) {
-            let result = ctx
-                .check_draw_elements(mode, count, type_)
-                .and_then(|size| {
-                    // SAFETY: forwarded from the caller.
-                    unsafe { draw_elements(ctx, mode, type_, indices, size) }
-                });
+            let size = ctx.check_draw_elements(mode, count, type_);
+            // SAFETY: forwarded from the caller.
+            let result = unsafe { draw_elements(ctx, mode, type_, indices, size) };
             record(ctx, result);
         }
         Ok(())
@@ -278,21 +292,24 @@ unsafe fn draw_elements(
     mode: GLenum,
     index_type: GLenum,
     indices: *const c_void,
-    size: usize,
+    size: GlResult<usize>,
 ) -> GlResult {
-    let store = ctx.element_store()?;
-    let bytes = match &store {
-        Some(store) => {
-            let offset = indices as usize;
-            let range = offset..offset.checked_add(size).ok_or(GlError::InvalidOperation)?;
-            store.get(range).ok_or(GlError::InvalidOperation)?
-        }
-        // SAFETY: forwarded from the caller.
-        None => unsafe { read_indices(indices, size)? },
-    };
-    let indices = ElementIndices::Listed { index_type, bytes };
+    let store = size.and_then(|size| Ok((size, ctx.element_store()?)));
+    let bytes = store
+        .as_ref()
+        .map_err(|e| *e)
+        .and_then(|(size, store)| match store {
+            Some(store) => {
+                let offset = indices as usize;
+                let range = offset..offset.checked_add(*size).ok_or(GlError::InvalidOperation)?;
+                store.get(range).ok_or(GlError::InvalidOperation)
+            }
+            // SAFETY: forwarded from the caller.
+            None => unsafe { read_indices(indices, *size) },
+        });
+    let indices = bytes.map(|bytes| ElementIndices::Listed { index_type, bytes });
     // SAFETY: forwarded from the caller.
-    unsafe { draw(ctx, mode, &indices) }
+    unsafe { draw(ctx, mode, indices) }
 }
 
 /// # Safety
@@ -307,7 +324,7 @@ pub unsafe extern "C" fn glDrawElements(
     indices: *const c_void,
 ) {
     with_context(|ctx| {
-        let size = ctx.check_draw_elements(mode, count, type_)?;
+        let size = ctx.check_draw_elements(mode, count, type_);
         // SAFETY: forwarded from the caller.
         unsafe { draw_elements(ctx, mode, type_, indices, size) }
     })
@@ -328,7 +345,7 @@ pub unsafe extern "C" fn glDrawRangeElements(
     indices: *const c_void,
 ) {
     with_context(|ctx| {
-        let size = ctx.check_draw_range_elements(mode, start, end, count, type_)?;
+        let size = ctx.check_draw_range_elements(mode, start, end, count, type_);
         // SAFETY: forwarded from the caller.
         unsafe { draw_elements(ctx, mode, type_, indices, size) }
     })

@@ -5,36 +5,30 @@
 use glam::{Vec3, Vec4};
 
 use super::{read, with_context};
+use crate::commands::list::Command;
 use crate::error::GlError;
 use crate::gl::*;
 use crate::state::convert::Component;
 
+/// Runs `command`, or compiles it into the display list being compiled.
+pub(super) fn record_or_run(command: Command) {
+    with_context(|ctx| ctx.record_or_run(command))
+}
+
 fn color(c: [f32; 4]) {
-    with_context(|ctx| {
-        ctx.color(Vec4::from_array(c));
-        Ok(())
-    })
+    record_or_run(Command::Color(Vec4::from_array(c)))
 }
 
 fn normal(n: [f32; 3]) {
-    with_context(|ctx| {
-        ctx.normal(Vec3::from_array(n));
-        Ok(())
-    })
+    record_or_run(Command::Normal(Vec3::from_array(n)))
 }
 
 fn tex_coord(t: [f32; 4]) {
-    with_context(|ctx| {
-        ctx.tex_coord(Vec4::from_array(t));
-        Ok(())
-    })
+    record_or_run(Command::TexCoord(Vec4::from_array(t)))
 }
 
 fn vertex(v: [f32; 4]) {
-    with_context(|ctx| {
-        ctx.vertex(Vec4::from_array(v));
-        Ok(())
-    })
+    record_or_run(Command::Vertex(Vec4::from_array(v)))
 }
 
 /// Reads `N` components at `v` into a 4-vector padded with `pad`; NULL is GL_INVALID_VALUE.
@@ -50,7 +44,8 @@ pub(super) unsafe fn read_vector<T: Component, const N: usize>(
     // SAFETY: forwarded from the caller.
     let values = unsafe { read(v, N) };
     if values.is_empty() {
-        with_context::<()>(|_| Err(GlError::InvalidValue));
+        // compiled too: the error is raised when the list executes
+        record_or_run(Command::Error(GlError::InvalidValue));
         return;
     }
     let mut out = pad;
@@ -759,10 +754,7 @@ pub unsafe extern "C" fn glVertex4dv(v: *const GLdouble) {
 
 #[unsafe(no_mangle)]
 pub extern "C" fn glEdgeFlag(flag: GLboolean) {
-    with_context(|ctx| {
-        ctx.edge_flag(flag != 0);
-        Ok(())
-    })
+    record_or_run(Command::EdgeFlag(flag != 0))
 }
 
 /// # Safety
@@ -771,9 +763,11 @@ pub extern "C" fn glEdgeFlag(flag: GLboolean) {
 pub unsafe extern "C" fn glEdgeFlagv(flag: *const GLboolean) {
     // SAFETY: forwarded from the caller.
     let values = unsafe { read(flag, 1) };
-    with_context(|ctx| {
-        let flag = values.first().ok_or(GlError::InvalidValue)?;
-        ctx.edge_flag(*flag != 0);
-        Ok(())
-    })
+    record_or_run(
+        values
+            .first()
+            .map_or(Command::Error(GlError::InvalidValue), |&flag| {
+                Command::EdgeFlag(flag != 0)
+            }),
+    )
 }

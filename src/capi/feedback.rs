@@ -1,28 +1,8 @@
-//! glBegin, glEnd, glViewport, glDepthRange, glFeedbackBuffer, glRenderMode, glPassThrough.
+//! glFeedbackBuffer, glRenderMode, glFlush, glFinish.
 
 use super::with_context;
 use crate::gl::*;
 use crate::pipeline::feedback::FeedbackStorage;
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glBegin(mode: GLenum) {
-    with_context(|ctx| ctx.begin(mode))
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glEnd() {
-    with_context(|ctx| ctx.end())
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
-    with_context(|ctx| ctx.viewport(x, y, width, height))
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glDepthRange(near: GLclampd, far: GLclampd) {
-    with_context(|ctx| ctx.depth_range(near, far))
-}
 
 /// `buffer` must have room for `size` floats whenever the context is in feedback mode until
 /// glFeedbackBuffer is called again: fed-back values are written straight into it, and
@@ -87,11 +67,6 @@ pub extern "C" fn glRenderMode(mode: GLenum) -> GLint {
         }
         Ok(count)
     })
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glPassThrough(token: GLfloat) {
-    with_context(|ctx| ctx.pass_through(token))
 }
 
 /// Every command has finished when it returns: there is nothing to flush.

@@ -5,13 +5,667 @@
 
 use super::{read, read_mut, with_context, write};
 use crate::gl::*;
+use crate::context::Context;
+use crate::error::GlResult;
 use crate::state::fog::fog_param_count;
 use crate::state::pixel::{StoreParam, pixel_map_read_count};
 use crate::state::rasterization::point_param_count;
+use crate::state::light::light_param_count;
+use crate::state::light_model::light_model_param_count;
+use crate::state::material::material_param_count;
+use crate::error::GlError;
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glBegin(mode: GLenum) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glBegin { mode }.into()) {
+            return Ok(());
+        }
+        ctx.begin(mode)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEnd() {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glEnd {  }.into()) {
+            return Ok(());
+        }
+        ctx.end()
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glViewport { x, y, width, height }.into()) {
+            return Ok(());
+        }
+        ctx.viewport(x, y, width, height)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glDepthRange(near: GLclampd, far: GLclampd) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glDepthRange { near, far }.into()) {
+            return Ok(());
+        }
+        ctx.depth_range(near, far)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glLightf(light: GLenum, pname: GLenum, param: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glLightf { light, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.light_scalar(light, pname, param)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glLighti(light: GLenum, pname: GLenum, param: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glLighti { light, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.light_scalar(light, pname, param as f32)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glLightfv(light: GLenum, pname: GLenum, params: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, light_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glLightfv { light, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.light(light, pname, params)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glLightiv(light: GLenum, pname: GLenum, params: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, light_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glLightiv { light, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.light_i(light, pname, params)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMaterialf(face: GLenum, pname: GLenum, param: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMaterialf { face, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.material_scalar(face, pname, param)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMateriali(face: GLenum, pname: GLenum, param: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMateriali { face, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.material_scalar(face, pname, param as f32)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMaterialfv(face: GLenum, pname: GLenum, params: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, material_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glMaterialfv { face, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.material(face, pname, params)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMaterialiv(face: GLenum, pname: GLenum, params: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, material_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glMaterialiv { face, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.material_i(face, pname, params)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glLightModelf(pname: GLenum, param: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glLightModelf { pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.light_model_scalar(pname, param)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glLightModeli(pname: GLenum, param: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glLightModeli { pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.light_model_scalar(pname, param as f32)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glLightModelfv(pname: GLenum, params: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, light_model_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glLightModelfv { pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.light_model(pname, params)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glLightModeliv(pname: GLenum, params: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, light_model_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glLightModeliv { pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.light_model_i(pname, params)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColorMaterial(face: GLenum, mode: GLenum) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glColorMaterial { face, mode }.into()) {
+            return Ok(());
+        }
+        ctx.color_material(face, mode)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEnable(cap: GLenum) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glEnable { cap }.into()) {
+            return Ok(());
+        }
+        ctx.set_capability(cap, true)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glDisable(cap: GLenum) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glDisable { cap }.into()) {
+            return Ok(());
+        }
+        ctx.set_capability(cap, false)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMatrixMode(mode: GLenum) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMatrixMode { mode }.into()) {
+            return Ok(());
+        }
+        ctx.matrix_mode(mode)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glLoadIdentity() {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glLoadIdentity {  }.into()) {
+            return Ok(());
+        }
+        ctx.load_identity()
+    })
+}
+
+/// # Safety
+/// `m` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glLoadMatrixf(m: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let m = unsafe { read(m, 16) };
+        if ctx.record(|| TableCommand::glLoadMatrixf { m: m.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.matrix_values(m, Context::load_matrix)
+    })
+}
+
+/// # Safety
+/// `m` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glLoadMatrixd(m: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let m = unsafe { read(m, 16) };
+        if ctx.record(|| TableCommand::glLoadMatrixd { m: m.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.matrix_values(m, Context::load_matrix)
+    })
+}
+
+/// # Safety
+/// `m` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultMatrixf(m: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let m = unsafe { read(m, 16) };
+        if ctx.record(|| TableCommand::glMultMatrixf { m: m.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.matrix_values(m, Context::mult_matrix)
+    })
+}
+
+/// # Safety
+/// `m` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultMatrixd(m: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let m = unsafe { read(m, 16) };
+        if ctx.record(|| TableCommand::glMultMatrixd { m: m.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.matrix_values(m, Context::mult_matrix)
+    })
+}
+
+/// # Safety
+/// `m` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glLoadTransposeMatrixf(m: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let m = unsafe { read(m, 16) };
+        if ctx.record(|| TableCommand::glLoadTransposeMatrixf { m: m.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.matrix_values(m, Context::load_transpose_matrix)
+    })
+}
+
+/// # Safety
+/// `m` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glLoadTransposeMatrixd(m: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let m = unsafe { read(m, 16) };
+        if ctx.record(|| TableCommand::glLoadTransposeMatrixd { m: m.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.matrix_values(m, Context::load_transpose_matrix)
+    })
+}
+
+/// # Safety
+/// `m` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultTransposeMatrixf(m: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let m = unsafe { read(m, 16) };
+        if ctx.record(|| TableCommand::glMultTransposeMatrixf { m: m.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.matrix_values(m, Context::mult_transpose_matrix)
+    })
+}
+
+/// # Safety
+/// `m` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultTransposeMatrixd(m: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let m = unsafe { read(m, 16) };
+        if ctx.record(|| TableCommand::glMultTransposeMatrixd { m: m.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.matrix_values(m, Context::mult_transpose_matrix)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTranslatef(x: GLfloat, y: GLfloat, z: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glTranslatef { x, y, z }.into()) {
+            return Ok(());
+        }
+        ctx.translate(x.into(), y.into(), z.into())
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTranslated(x: GLdouble, y: GLdouble, z: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glTranslated { x, y, z }.into()) {
+            return Ok(());
+        }
+        ctx.translate(x, y, z)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glRotatef(angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glRotatef { angle, x, y, z }.into()) {
+            return Ok(());
+        }
+        ctx.rotate(angle.into(), x.into(), y.into(), z.into())
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glRotated(angle: GLdouble, x: GLdouble, y: GLdouble, z: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glRotated { angle, x, y, z }.into()) {
+            return Ok(());
+        }
+        ctx.rotate(angle, x, y, z)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glScalef(x: GLfloat, y: GLfloat, z: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glScalef { x, y, z }.into()) {
+            return Ok(());
+        }
+        ctx.scale(x.into(), y.into(), z.into())
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glScaled(x: GLdouble, y: GLdouble, z: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glScaled { x, y, z }.into()) {
+            return Ok(());
+        }
+        ctx.scale(x, y, z)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glFrustum(left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble, near: GLdouble, far: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glFrustum { left, right, bottom, top, near, far }.into()) {
+            return Ok(());
+        }
+        ctx.frustum(left, right, bottom, top, near, far)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glOrtho(left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble, near: GLdouble, far: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glOrtho { left, right, bottom, top, near, far }.into()) {
+            return Ok(());
+        }
+        ctx.ortho(left, right, bottom, top, near, far)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glPushMatrix() {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPushMatrix {  }.into()) {
+            return Ok(());
+        }
+        ctx.push_matrix()
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glPopMatrix() {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPopMatrix {  }.into()) {
+            return Ok(());
+        }
+        ctx.pop_matrix()
+    })
+}
+
+/// # Safety
+/// `equation` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glClipPlane(plane: GLenum, equation: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let equation = unsafe { read(equation, 4) };
+        if ctx.record(|| TableCommand::glClipPlane { plane, equation: equation.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.clip_plane(plane, equation.try_into().map_err(|_| GlError::InvalidValue)?)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glShadeModel(mode: GLenum) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glShadeModel { mode }.into()) {
+            return Ok(());
+        }
+        ctx.shade_model(mode)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glFrontFace(mode: GLenum) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glFrontFace { mode }.into()) {
+            return Ok(());
+        }
+        ctx.front_face(mode)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glCullFace(mode: GLenum) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glCullFace { mode }.into()) {
+            return Ok(());
+        }
+        ctx.cull_face(mode)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPolygonMode { face, mode }.into()) {
+            return Ok(());
+        }
+        ctx.polygon_mode(face, mode)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glRectf(x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glRectf { x1, y1, x2, y2 }.into()) {
+            return Ok(());
+        }
+        ctx.rect(x1, y1, x2, y2)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glRectd(x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glRectd { x1, y1, x2, y2 }.into()) {
+            return Ok(());
+        }
+        ctx.rect(x1 as f32, y1 as f32, x2 as f32, y2 as f32)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glRecti(x1: GLint, y1: GLint, x2: GLint, y2: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glRecti { x1, y1, x2, y2 }.into()) {
+            return Ok(());
+        }
+        ctx.rect(x1 as f32, y1 as f32, x2 as f32, y2 as f32)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glRects(x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glRects { x1, y1, x2, y2 }.into()) {
+            return Ok(());
+        }
+        ctx.rect(x1.into(), y1.into(), x2.into(), y2.into())
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glInitNames() {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glInitNames {  }.into()) {
+            return Ok(());
+        }
+        ctx.init_names()
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glPushName(name: GLuint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPushName { name }.into()) {
+            return Ok(());
+        }
+        ctx.push_name(name)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glPopName() {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPopName {  }.into()) {
+            return Ok(());
+        }
+        ctx.pop_name()
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glLoadName(name: GLuint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glLoadName { name }.into()) {
+            return Ok(());
+        }
+        ctx.load_name(name)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glPassThrough(token: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPassThrough { token }.into()) {
+            return Ok(());
+        }
+        ctx.pass_through(token)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glGenLists(range: GLsizei) -> GLuint {
+    with_context(|ctx| {
+        ctx.gen_lists(range)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glNewList(list: GLuint, mode: GLenum) {
+    with_context(|ctx| {
+        ctx.new_list(list, mode)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEndList() {
+    with_context(|ctx| {
+        ctx.end_list()
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glDeleteLists(list: GLuint, range: GLsizei) {
+    with_context(|ctx| {
+        ctx.delete_lists(list, range)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glIsList(list: GLuint) -> GLboolean {
+    with_context(|ctx| {
+        ctx.is_list(list).map(GLboolean::from)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glCallList(list: GLuint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glCallList { list }.into()) {
+            return Ok(());
+        }
+        ctx.call_list(list)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glListBase(base: GLuint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glListBase { base }.into()) {
+            return Ok(());
+        }
+        ctx.list_base(base)
+    })
+}
 
 #[unsafe(no_mangle)]
 pub extern "C" fn glPointSize(size: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPointSize { size }.into()) {
+            return Ok(());
+        }
         ctx.point_size(size)
     })
 }
@@ -19,6 +673,9 @@ pub extern "C" fn glPointSize(size: GLfloat) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glPointParameterf(pname: GLenum, param: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPointParameterf { pname, param }.into()) {
+            return Ok(());
+        }
         ctx.point_parameter_scalar(pname, param)
     })
 }
@@ -26,6 +683,9 @@ pub extern "C" fn glPointParameterf(pname: GLenum, param: GLfloat) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glPointParameteri(pname: GLenum, param: GLint) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPointParameteri { pname, param }.into()) {
+            return Ok(());
+        }
         ctx.point_parameter_scalar(pname, param as f32)
     })
 }
@@ -37,6 +697,9 @@ pub unsafe extern "C" fn glPointParameterfv(pname: GLenum, params: *const GLfloa
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let params = unsafe { read(params, point_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glPointParameterfv { pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.point_parameter(pname, params)
     })
 }
@@ -48,6 +711,9 @@ pub unsafe extern "C" fn glPointParameteriv(pname: GLenum, params: *const GLint)
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let params = unsafe { read(params, point_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glPointParameteriv { pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.point_parameter_i(pname, params)
     })
 }
@@ -55,6 +721,9 @@ pub unsafe extern "C" fn glPointParameteriv(pname: GLenum, params: *const GLint)
 #[unsafe(no_mangle)]
 pub extern "C" fn glLineWidth(width: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glLineWidth { width }.into()) {
+            return Ok(());
+        }
         ctx.line_width(width)
     })
 }
@@ -62,6 +731,9 @@ pub extern "C" fn glLineWidth(width: GLfloat) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glLineStipple(factor: GLint, pattern: GLushort) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glLineStipple { factor, pattern }.into()) {
+            return Ok(());
+        }
         ctx.line_stipple(factor, pattern)
     })
 }
@@ -69,6 +741,9 @@ pub extern "C" fn glLineStipple(factor: GLint, pattern: GLushort) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glPolygonOffset(factor: GLfloat, units: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPolygonOffset { factor, units }.into()) {
+            return Ok(());
+        }
         ctx.polygon_offset(factor, units)
     })
 }
@@ -76,6 +751,9 @@ pub extern "C" fn glPolygonOffset(factor: GLfloat, units: GLfloat) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glSampleCoverage(value: GLclampf, invert: GLboolean) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glSampleCoverage { value, invert }.into()) {
+            return Ok(());
+        }
         ctx.sample_coverage(value, invert != GL_FALSE)
     })
 }
@@ -117,6 +795,9 @@ pub unsafe extern "C" fn glRectsv(v1: *const GLshort, v2: *const GLshort) {
         let v1 = unsafe { read(v1, 2) };
         // SAFETY: the caller's guarantee, forwarded.
         let v2 = unsafe { read(v2, 2) };
+        if ctx.record(|| TableCommand::glRectsv { v1: v1.to_vec(), v2: v2.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.rect_v(v1, v2)
     })
 }
@@ -131,6 +812,9 @@ pub unsafe extern "C" fn glRectiv(v1: *const GLint, v2: *const GLint) {
         let v1 = unsafe { read(v1, 2) };
         // SAFETY: the caller's guarantee, forwarded.
         let v2 = unsafe { read(v2, 2) };
+        if ctx.record(|| TableCommand::glRectiv { v1: v1.to_vec(), v2: v2.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.rect_v(v1, v2)
     })
 }
@@ -145,6 +829,9 @@ pub unsafe extern "C" fn glRectfv(v1: *const GLfloat, v2: *const GLfloat) {
         let v1 = unsafe { read(v1, 2) };
         // SAFETY: the caller's guarantee, forwarded.
         let v2 = unsafe { read(v2, 2) };
+        if ctx.record(|| TableCommand::glRectfv { v1: v1.to_vec(), v2: v2.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.rect_v(v1, v2)
     })
 }
@@ -159,6 +846,9 @@ pub unsafe extern "C" fn glRectdv(v1: *const GLdouble, v2: *const GLdouble) {
         let v1 = unsafe { read(v1, 2) };
         // SAFETY: the caller's guarantee, forwarded.
         let v2 = unsafe { read(v2, 2) };
+        if ctx.record(|| TableCommand::glRectdv { v1: v1.to_vec(), v2: v2.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.rect_v(v1, v2)
     })
 }
@@ -166,6 +856,9 @@ pub unsafe extern "C" fn glRectdv(v1: *const GLdouble, v2: *const GLdouble) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glFogf(pname: GLenum, param: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glFogf { pname, param }.into()) {
+            return Ok(());
+        }
         ctx.fog_scalar(pname, param)
     })
 }
@@ -173,6 +866,9 @@ pub extern "C" fn glFogf(pname: GLenum, param: GLfloat) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glFogi(pname: GLenum, param: GLint) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glFogi { pname, param }.into()) {
+            return Ok(());
+        }
         ctx.fog_scalar(pname, param as f32)
     })
 }
@@ -184,6 +880,9 @@ pub unsafe extern "C" fn glFogfv(pname: GLenum, params: *const GLfloat) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let params = unsafe { read(params, fog_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glFogfv { pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.fog(pname, params)
     })
 }
@@ -195,6 +894,9 @@ pub unsafe extern "C" fn glFogiv(pname: GLenum, params: *const GLint) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let params = unsafe { read(params, fog_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glFogiv { pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.fog_i(pname, params)
     })
 }
@@ -202,6 +904,9 @@ pub unsafe extern "C" fn glFogiv(pname: GLenum, params: *const GLint) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glHint(target: GLenum, mode: GLenum) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glHint { target, mode }.into()) {
+            return Ok(());
+        }
         ctx.hint(target, mode)
     })
 }
@@ -209,6 +914,9 @@ pub extern "C" fn glHint(target: GLenum, mode: GLenum) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glScissor(x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glScissor { x, y, width, height }.into()) {
+            return Ok(());
+        }
         ctx.scissor(x, y, width, height)
     })
 }
@@ -216,6 +924,9 @@ pub extern "C" fn glScissor(x: GLint, y: GLint, width: GLsizei, height: GLsizei)
 #[unsafe(no_mangle)]
 pub extern "C" fn glAlphaFunc(func: GLenum, reference: GLclampf) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glAlphaFunc { func, reference }.into()) {
+            return Ok(());
+        }
         ctx.alpha_func(func, reference)
     })
 }
@@ -223,6 +934,9 @@ pub extern "C" fn glAlphaFunc(func: GLenum, reference: GLclampf) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glStencilFunc(func: GLenum, reference: GLint, mask: GLuint) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glStencilFunc { func, reference, mask }.into()) {
+            return Ok(());
+        }
         ctx.stencil_func(func, reference, mask)
     })
 }
@@ -230,6 +944,9 @@ pub extern "C" fn glStencilFunc(func: GLenum, reference: GLint, mask: GLuint) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glStencilOp(fail: GLenum, zfail: GLenum, zpass: GLenum) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glStencilOp { fail, zfail, zpass }.into()) {
+            return Ok(());
+        }
         ctx.stencil_op(fail, zfail, zpass)
     })
 }
@@ -237,6 +954,9 @@ pub extern "C" fn glStencilOp(fail: GLenum, zfail: GLenum, zpass: GLenum) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glDepthFunc(func: GLenum) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glDepthFunc { func }.into()) {
+            return Ok(());
+        }
         ctx.depth_func(func)
     })
 }
@@ -244,6 +964,9 @@ pub extern "C" fn glDepthFunc(func: GLenum) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glBlendFunc(sfactor: GLenum, dfactor: GLenum) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glBlendFunc { sfactor, dfactor }.into()) {
+            return Ok(());
+        }
         ctx.blend_func(sfactor, dfactor)
     })
 }
@@ -251,6 +974,9 @@ pub extern "C" fn glBlendFunc(sfactor: GLenum, dfactor: GLenum) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glBlendFuncSeparate(sfactor_rgb: GLenum, dfactor_rgb: GLenum, sfactor_alpha: GLenum, dfactor_alpha: GLenum) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glBlendFuncSeparate { sfactor_rgb, dfactor_rgb, sfactor_alpha, dfactor_alpha }.into()) {
+            return Ok(());
+        }
         ctx.blend_func_separate(sfactor_rgb, dfactor_rgb, sfactor_alpha, dfactor_alpha)
     })
 }
@@ -258,6 +984,9 @@ pub extern "C" fn glBlendFuncSeparate(sfactor_rgb: GLenum, dfactor_rgb: GLenum, 
 #[unsafe(no_mangle)]
 pub extern "C" fn glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glBlendColor { red, green, blue, alpha }.into()) {
+            return Ok(());
+        }
         ctx.blend_color(glam::Vec4::new(red, green, blue, alpha))
     })
 }
@@ -265,6 +994,9 @@ pub extern "C" fn glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, a
 #[unsafe(no_mangle)]
 pub extern "C" fn glBlendEquation(mode: GLenum) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glBlendEquation { mode }.into()) {
+            return Ok(());
+        }
         ctx.blend_equation(mode)
     })
 }
@@ -272,6 +1004,9 @@ pub extern "C" fn glBlendEquation(mode: GLenum) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glLogicOp(opcode: GLenum) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glLogicOp { opcode }.into()) {
+            return Ok(());
+        }
         ctx.logic_op(opcode)
     })
 }
@@ -279,6 +1014,9 @@ pub extern "C" fn glLogicOp(opcode: GLenum) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glDrawBuffer(mode: GLenum) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glDrawBuffer { mode }.into()) {
+            return Ok(());
+        }
         ctx.draw_buffer(mode)
     })
 }
@@ -286,6 +1024,9 @@ pub extern "C" fn glDrawBuffer(mode: GLenum) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glIndexMask(mask: GLuint) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glIndexMask { mask }.into()) {
+            return Ok(());
+        }
         ctx.index_mask(mask)
     })
 }
@@ -293,6 +1034,9 @@ pub extern "C" fn glIndexMask(mask: GLuint) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glColorMask { red, green, blue, alpha }.into()) {
+            return Ok(());
+        }
         ctx.color_mask([red, green, blue, alpha].map(|c| c != GL_FALSE))
     })
 }
@@ -300,6 +1044,9 @@ pub extern "C" fn glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean,
 #[unsafe(no_mangle)]
 pub extern "C" fn glDepthMask(flag: GLboolean) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glDepthMask { flag }.into()) {
+            return Ok(());
+        }
         ctx.depth_mask(flag != GL_FALSE)
     })
 }
@@ -307,6 +1054,9 @@ pub extern "C" fn glDepthMask(flag: GLboolean) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glStencilMask(mask: GLuint) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glStencilMask { mask }.into()) {
+            return Ok(());
+        }
         ctx.stencil_mask(mask)
     })
 }
@@ -315,6 +1065,9 @@ pub extern "C" fn glStencilMask(mask: GLuint) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glClear(mask: GLbitfield) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glClear { mask }.into()) {
+            return Ok(());
+        }
         ctx.clear(mask)
     })
 }
@@ -322,6 +1075,9 @@ pub extern "C" fn glClear(mask: GLbitfield) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glClearColor { red, green, blue, alpha }.into()) {
+            return Ok(());
+        }
         ctx.clear_color(glam::Vec4::new(red, green, blue, alpha))
     })
 }
@@ -329,6 +1085,9 @@ pub extern "C" fn glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, a
 #[unsafe(no_mangle)]
 pub extern "C" fn glClearIndex(c: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glClearIndex { c }.into()) {
+            return Ok(());
+        }
         ctx.clear_index(c)
     })
 }
@@ -336,6 +1095,9 @@ pub extern "C" fn glClearIndex(c: GLfloat) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glClearDepth(depth: GLclampd) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glClearDepth { depth }.into()) {
+            return Ok(());
+        }
         ctx.clear_depth(depth)
     })
 }
@@ -343,6 +1105,9 @@ pub extern "C" fn glClearDepth(depth: GLclampd) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glClearStencil(s: GLint) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glClearStencil { s }.into()) {
+            return Ok(());
+        }
         ctx.clear_stencil(s)
     })
 }
@@ -350,6 +1115,9 @@ pub extern "C" fn glClearStencil(s: GLint) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glClearAccum { red, green, blue, alpha }.into()) {
+            return Ok(());
+        }
         ctx.clear_accum(glam::Vec4::new(red, green, blue, alpha))
     })
 }
@@ -358,6 +1126,9 @@ pub extern "C" fn glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alph
 #[unsafe(no_mangle)]
 pub extern "C" fn glAccum(op: GLenum, value: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glAccum { op, value }.into()) {
+            return Ok(());
+        }
         ctx.accum(op, value)
     })
 }
@@ -379,6 +1150,9 @@ pub extern "C" fn glPixelStorei(pname: GLenum, param: GLint) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glPixelTransferf(pname: GLenum, param: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPixelTransferf { pname, param }.into()) {
+            return Ok(());
+        }
         ctx.pixel_transfer(pname, param)
     })
 }
@@ -386,6 +1160,9 @@ pub extern "C" fn glPixelTransferf(pname: GLenum, param: GLfloat) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glPixelTransferi(pname: GLenum, param: GLint) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPixelTransferi { pname, param }.into()) {
+            return Ok(());
+        }
         ctx.pixel_transfer(pname, param as f32)
     })
 }
@@ -397,6 +1174,9 @@ pub unsafe extern "C" fn glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *co
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let values = unsafe { read(values, pixel_map_read_count(mapsize)) };
+        if ctx.record(|| TableCommand::glPixelMapfv { map, mapsize, values: values.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.pixel_map(map, mapsize, values)
     })
 }
@@ -410,6 +1190,9 @@ pub unsafe extern "C" fn glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *c
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let values = unsafe { read(values, pixel_map_read_count(mapsize)) };
+        if ctx.record(|| TableCommand::glPixelMapuiv { map, mapsize, values: values.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.pixel_map_integers(map, mapsize, values, u32::MAX.into())
     })
 }
@@ -423,6 +1206,9 @@ pub unsafe extern "C" fn glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *c
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let values = unsafe { read(values, pixel_map_read_count(mapsize)) };
+        if ctx.record(|| TableCommand::glPixelMapusv { map, mapsize, values: values.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.pixel_map_integers(map, mapsize, values, u16::MAX.into())
     })
 }
@@ -463,6 +1249,9 @@ pub unsafe extern "C" fn glGetPixelMapusv(map: GLenum, values: *mut GLushort) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPixelZoom { xfactor, yfactor }.into()) {
+            return Ok(());
+        }
         ctx.pixel_zoom(xfactor, yfactor)
     })
 }
@@ -470,6 +1259,9 @@ pub extern "C" fn glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glReadBuffer(mode: GLenum) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glReadBuffer { mode }.into()) {
+            return Ok(());
+        }
         ctx.read_buffer(mode)
     })
 }
@@ -477,6 +1269,9 @@ pub extern "C" fn glReadBuffer(mode: GLenum) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glSecondaryColor3b(red: GLbyte, green: GLbyte, blue: GLbyte) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glSecondaryColor3b { red, green, blue }.into()) {
+            return Ok(());
+        }
         { ctx.secondary_color_of([red, green, blue]); Ok(()) }
     })
 }
@@ -488,6 +1283,9 @@ pub unsafe extern "C" fn glSecondaryColor3bv(v: *const GLbyte) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glSecondaryColor3bv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.secondary_color_v(v)
     })
 }
@@ -495,6 +1293,9 @@ pub unsafe extern "C" fn glSecondaryColor3bv(v: *const GLbyte) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glSecondaryColor3s(red: GLshort, green: GLshort, blue: GLshort) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glSecondaryColor3s { red, green, blue }.into()) {
+            return Ok(());
+        }
         { ctx.secondary_color_of([red, green, blue]); Ok(()) }
     })
 }
@@ -506,6 +1307,9 @@ pub unsafe extern "C" fn glSecondaryColor3sv(v: *const GLshort) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glSecondaryColor3sv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.secondary_color_v(v)
     })
 }
@@ -513,6 +1317,9 @@ pub unsafe extern "C" fn glSecondaryColor3sv(v: *const GLshort) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glSecondaryColor3i(red: GLint, green: GLint, blue: GLint) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glSecondaryColor3i { red, green, blue }.into()) {
+            return Ok(());
+        }
         { ctx.secondary_color_of([red, green, blue]); Ok(()) }
     })
 }
@@ -524,6 +1331,9 @@ pub unsafe extern "C" fn glSecondaryColor3iv(v: *const GLint) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glSecondaryColor3iv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.secondary_color_v(v)
     })
 }
@@ -531,6 +1341,9 @@ pub unsafe extern "C" fn glSecondaryColor3iv(v: *const GLint) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glSecondaryColor3f(red: GLfloat, green: GLfloat, blue: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glSecondaryColor3f { red, green, blue }.into()) {
+            return Ok(());
+        }
         { ctx.secondary_color_of([red, green, blue]); Ok(()) }
     })
 }
@@ -542,6 +1355,9 @@ pub unsafe extern "C" fn glSecondaryColor3fv(v: *const GLfloat) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glSecondaryColor3fv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.secondary_color_v(v)
     })
 }
@@ -549,6 +1365,9 @@ pub unsafe extern "C" fn glSecondaryColor3fv(v: *const GLfloat) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glSecondaryColor3d(red: GLdouble, green: GLdouble, blue: GLdouble) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glSecondaryColor3d { red, green, blue }.into()) {
+            return Ok(());
+        }
         { ctx.secondary_color_of([red, green, blue]); Ok(()) }
     })
 }
@@ -560,6 +1379,9 @@ pub unsafe extern "C" fn glSecondaryColor3dv(v: *const GLdouble) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glSecondaryColor3dv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.secondary_color_v(v)
     })
 }
@@ -567,6 +1389,9 @@ pub unsafe extern "C" fn glSecondaryColor3dv(v: *const GLdouble) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glSecondaryColor3ub(red: GLubyte, green: GLubyte, blue: GLubyte) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glSecondaryColor3ub { red, green, blue }.into()) {
+            return Ok(());
+        }
         { ctx.secondary_color_of([red, green, blue]); Ok(()) }
     })
 }
@@ -578,6 +1403,9 @@ pub unsafe extern "C" fn glSecondaryColor3ubv(v: *const GLubyte) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glSecondaryColor3ubv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.secondary_color_v(v)
     })
 }
@@ -585,6 +1413,9 @@ pub unsafe extern "C" fn glSecondaryColor3ubv(v: *const GLubyte) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glSecondaryColor3us(red: GLushort, green: GLushort, blue: GLushort) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glSecondaryColor3us { red, green, blue }.into()) {
+            return Ok(());
+        }
         { ctx.secondary_color_of([red, green, blue]); Ok(()) }
     })
 }
@@ -596,6 +1427,9 @@ pub unsafe extern "C" fn glSecondaryColor3usv(v: *const GLushort) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glSecondaryColor3usv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.secondary_color_v(v)
     })
 }
@@ -603,6 +1437,9 @@ pub unsafe extern "C" fn glSecondaryColor3usv(v: *const GLushort) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glSecondaryColor3ui(red: GLuint, green: GLuint, blue: GLuint) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glSecondaryColor3ui { red, green, blue }.into()) {
+            return Ok(());
+        }
         { ctx.secondary_color_of([red, green, blue]); Ok(()) }
     })
 }
@@ -614,6 +1451,9 @@ pub unsafe extern "C" fn glSecondaryColor3uiv(v: *const GLuint) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glSecondaryColor3uiv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.secondary_color_v(v)
     })
 }
@@ -621,6 +1461,9 @@ pub unsafe extern "C" fn glSecondaryColor3uiv(v: *const GLuint) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glFogCoordf(coord: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glFogCoordf { coord }.into()) {
+            return Ok(());
+        }
         { ctx.fog_coord(coord); Ok(()) }
     })
 }
@@ -632,6 +1475,9 @@ pub unsafe extern "C" fn glFogCoordfv(coord: *const GLfloat) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let coord = unsafe { read(coord, 1) };
+        if ctx.record(|| TableCommand::glFogCoordfv { coord: coord.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.fog_coord_v(coord)
     })
 }
@@ -639,6 +1485,9 @@ pub unsafe extern "C" fn glFogCoordfv(coord: *const GLfloat) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glFogCoordd(coord: GLdouble) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glFogCoordd { coord }.into()) {
+            return Ok(());
+        }
         { ctx.fog_coord(coord as f32); Ok(()) }
     })
 }
@@ -650,6 +1499,9 @@ pub unsafe extern "C" fn glFogCoorddv(coord: *const GLdouble) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let coord = unsafe { read(coord, 1) };
+        if ctx.record(|| TableCommand::glFogCoorddv { coord: coord.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.fog_coord_v(coord)
     })
 }
@@ -657,6 +1509,9 @@ pub unsafe extern "C" fn glFogCoorddv(coord: *const GLdouble) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glWindowPos2s(x: GLshort, y: GLshort) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glWindowPos2s { x, y }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_of(x, y, 0 as GLshort)
     })
 }
@@ -668,6 +1523,9 @@ pub unsafe extern "C" fn glWindowPos2sv(v: *const GLshort) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 2) };
+        if ctx.record(|| TableCommand::glWindowPos2sv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_v(v)
     })
 }
@@ -675,6 +1533,9 @@ pub unsafe extern "C" fn glWindowPos2sv(v: *const GLshort) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glWindowPos2i(x: GLint, y: GLint) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glWindowPos2i { x, y }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_of(x, y, 0 as GLint)
     })
 }
@@ -686,6 +1547,9 @@ pub unsafe extern "C" fn glWindowPos2iv(v: *const GLint) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 2) };
+        if ctx.record(|| TableCommand::glWindowPos2iv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_v(v)
     })
 }
@@ -693,6 +1557,9 @@ pub unsafe extern "C" fn glWindowPos2iv(v: *const GLint) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glWindowPos2f(x: GLfloat, y: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glWindowPos2f { x, y }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_of(x, y, 0 as GLfloat)
     })
 }
@@ -704,6 +1571,9 @@ pub unsafe extern "C" fn glWindowPos2fv(v: *const GLfloat) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 2) };
+        if ctx.record(|| TableCommand::glWindowPos2fv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_v(v)
     })
 }
@@ -711,6 +1581,9 @@ pub unsafe extern "C" fn glWindowPos2fv(v: *const GLfloat) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glWindowPos2d(x: GLdouble, y: GLdouble) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glWindowPos2d { x, y }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_of(x, y, 0 as GLdouble)
     })
 }
@@ -722,6 +1595,9 @@ pub unsafe extern "C" fn glWindowPos2dv(v: *const GLdouble) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 2) };
+        if ctx.record(|| TableCommand::glWindowPos2dv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_v(v)
     })
 }
@@ -729,6 +1605,9 @@ pub unsafe extern "C" fn glWindowPos2dv(v: *const GLdouble) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glWindowPos3s(x: GLshort, y: GLshort, z: GLshort) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glWindowPos3s { x, y, z }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_of(x, y, z)
     })
 }
@@ -740,6 +1619,9 @@ pub unsafe extern "C" fn glWindowPos3sv(v: *const GLshort) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glWindowPos3sv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_v(v)
     })
 }
@@ -747,6 +1629,9 @@ pub unsafe extern "C" fn glWindowPos3sv(v: *const GLshort) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glWindowPos3i(x: GLint, y: GLint, z: GLint) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glWindowPos3i { x, y, z }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_of(x, y, z)
     })
 }
@@ -758,6 +1643,9 @@ pub unsafe extern "C" fn glWindowPos3iv(v: *const GLint) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glWindowPos3iv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_v(v)
     })
 }
@@ -765,6 +1653,9 @@ pub unsafe extern "C" fn glWindowPos3iv(v: *const GLint) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glWindowPos3f(x: GLfloat, y: GLfloat, z: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glWindowPos3f { x, y, z }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_of(x, y, z)
     })
 }
@@ -776,6 +1667,9 @@ pub unsafe extern "C" fn glWindowPos3fv(v: *const GLfloat) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glWindowPos3fv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_v(v)
     })
 }
@@ -783,6 +1677,9 @@ pub unsafe extern "C" fn glWindowPos3fv(v: *const GLfloat) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glWindowPos3d(x: GLdouble, y: GLdouble, z: GLdouble) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glWindowPos3d { x, y, z }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_of(x, y, z)
     })
 }
@@ -794,6 +1691,9 @@ pub unsafe extern "C" fn glWindowPos3dv(v: *const GLdouble) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glWindowPos3dv { v: v.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.window_pos_v(v)
     })
 }
@@ -807,6 +1707,9 @@ pub unsafe extern "C" fn glBitmap(width: GLsizei, height: GLsizei, _xorig: GLflo
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let _bitmap = unsafe { read(_bitmap, 0) };
+        if ctx.record(|| TableCommand::glBitmap { width, height, _xorig, _yorig, xmove, ymove, _bitmap: _bitmap.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.bitmap(width, height, xmove, ymove)
     })
 }
@@ -814,6 +1717,9 @@ pub unsafe extern "C" fn glBitmap(width: GLsizei, height: GLsizei, _xorig: GLflo
 #[unsafe(no_mangle)]
 pub extern "C" fn glCopyPixels(_x: GLint, _y: GLint, width: GLsizei, height: GLsizei, kind: GLenum) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glCopyPixels { _x, _y, width, height, kind }.into()) {
+            return Ok(());
+        }
         ctx.copy_pixels(width, height, kind)
     })
 }
@@ -850,6 +1756,9 @@ pub extern "C" fn glIsQuery(id: GLuint) -> GLboolean {
 #[unsafe(no_mangle)]
 pub extern "C" fn glBeginQuery(target: GLenum, id: GLuint) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glBeginQuery { target, id }.into()) {
+            return Ok(());
+        }
         ctx.begin_query(target, id)
     })
 }
@@ -857,6 +1766,9 @@ pub extern "C" fn glBeginQuery(target: GLenum, id: GLuint) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glEndQuery(target: GLenum) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glEndQuery { target }.into()) {
+            return Ok(());
+        }
         ctx.end_query(target)
     })
 }
@@ -897,6 +1809,9 @@ pub unsafe extern "C" fn glGetQueryObjectuiv(id: GLuint, pname: GLenum, params: 
 #[unsafe(no_mangle)]
 pub extern "C" fn glIndexd(c: GLdouble) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glIndexd { c }.into()) {
+            return Ok(());
+        }
         { ctx.index(c as f32); Ok(()) }
     })
 }
@@ -908,6 +1823,9 @@ pub unsafe extern "C" fn glIndexdv(c: *const GLdouble) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let c = unsafe { read(c, 1) };
+        if ctx.record(|| TableCommand::glIndexdv { c: c.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.index_v(c)
     })
 }
@@ -915,6 +1833,9 @@ pub unsafe extern "C" fn glIndexdv(c: *const GLdouble) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glIndexf(c: GLfloat) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glIndexf { c }.into()) {
+            return Ok(());
+        }
         { ctx.index(c); Ok(()) }
     })
 }
@@ -926,6 +1847,9 @@ pub unsafe extern "C" fn glIndexfv(c: *const GLfloat) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let c = unsafe { read(c, 1) };
+        if ctx.record(|| TableCommand::glIndexfv { c: c.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.index_v(c)
     })
 }
@@ -933,6 +1857,9 @@ pub unsafe extern "C" fn glIndexfv(c: *const GLfloat) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glIndexi(c: GLint) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glIndexi { c }.into()) {
+            return Ok(());
+        }
         { ctx.index(c as f32); Ok(()) }
     })
 }
@@ -944,6 +1871,9 @@ pub unsafe extern "C" fn glIndexiv(c: *const GLint) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let c = unsafe { read(c, 1) };
+        if ctx.record(|| TableCommand::glIndexiv { c: c.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.index_v(c)
     })
 }
@@ -951,6 +1881,9 @@ pub unsafe extern "C" fn glIndexiv(c: *const GLint) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glIndexs(c: GLshort) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glIndexs { c }.into()) {
+            return Ok(());
+        }
         { ctx.index(c as f32); Ok(()) }
     })
 }
@@ -962,6 +1895,9 @@ pub unsafe extern "C" fn glIndexsv(c: *const GLshort) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let c = unsafe { read(c, 1) };
+        if ctx.record(|| TableCommand::glIndexsv { c: c.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.index_v(c)
     })
 }
@@ -969,6 +1905,9 @@ pub unsafe extern "C" fn glIndexsv(c: *const GLshort) {
 #[unsafe(no_mangle)]
 pub extern "C" fn glIndexub(c: GLubyte) {
     with_context(|ctx| {
+        if ctx.record(|| TableCommand::glIndexub { c }.into()) {
+            return Ok(());
+        }
         { ctx.index(c as f32); Ok(()) }
     })
 }
@@ -980,6 +1919,930 @@ pub unsafe extern "C" fn glIndexubv(c: *const GLubyte) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let c = unsafe { read(c, 1) };
+        if ctx.record(|| TableCommand::glIndexubv { c: c.to_vec() }.into()) {
+            return Ok(());
+        }
         ctx.index_v(c)
     })
+}
+
+/// A command of the table compiled into a display list: its parameters, and a copy of the
+/// values its pointers gave at compile time.
+#[allow(non_camel_case_types)]
+#[derive(Clone, Debug, PartialEq)]
+pub enum TableCommand {
+    glBegin { mode: GLenum },
+    glEnd {},
+    glViewport { x: GLint, y: GLint, width: GLsizei, height: GLsizei },
+    glDepthRange { near: GLclampd, far: GLclampd },
+    glLightf { light: GLenum, pname: GLenum, param: GLfloat },
+    glLighti { light: GLenum, pname: GLenum, param: GLint },
+    glLightfv { light: GLenum, pname: GLenum, params: Vec<GLfloat> },
+    glLightiv { light: GLenum, pname: GLenum, params: Vec<GLint> },
+    glMaterialf { face: GLenum, pname: GLenum, param: GLfloat },
+    glMateriali { face: GLenum, pname: GLenum, param: GLint },
+    glMaterialfv { face: GLenum, pname: GLenum, params: Vec<GLfloat> },
+    glMaterialiv { face: GLenum, pname: GLenum, params: Vec<GLint> },
+    glLightModelf { pname: GLenum, param: GLfloat },
+    glLightModeli { pname: GLenum, param: GLint },
+    glLightModelfv { pname: GLenum, params: Vec<GLfloat> },
+    glLightModeliv { pname: GLenum, params: Vec<GLint> },
+    glColorMaterial { face: GLenum, mode: GLenum },
+    glEnable { cap: GLenum },
+    glDisable { cap: GLenum },
+    glMatrixMode { mode: GLenum },
+    glLoadIdentity {},
+    glLoadMatrixf { m: Vec<GLfloat> },
+    glLoadMatrixd { m: Vec<GLdouble> },
+    glMultMatrixf { m: Vec<GLfloat> },
+    glMultMatrixd { m: Vec<GLdouble> },
+    glLoadTransposeMatrixf { m: Vec<GLfloat> },
+    glLoadTransposeMatrixd { m: Vec<GLdouble> },
+    glMultTransposeMatrixf { m: Vec<GLfloat> },
+    glMultTransposeMatrixd { m: Vec<GLdouble> },
+    glTranslatef { x: GLfloat, y: GLfloat, z: GLfloat },
+    glTranslated { x: GLdouble, y: GLdouble, z: GLdouble },
+    glRotatef { angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat },
+    glRotated { angle: GLdouble, x: GLdouble, y: GLdouble, z: GLdouble },
+    glScalef { x: GLfloat, y: GLfloat, z: GLfloat },
+    glScaled { x: GLdouble, y: GLdouble, z: GLdouble },
+    glFrustum { left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble, near: GLdouble, far: GLdouble },
+    glOrtho { left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble, near: GLdouble, far: GLdouble },
+    glPushMatrix {},
+    glPopMatrix {},
+    glClipPlane { plane: GLenum, equation: Vec<GLdouble> },
+    glShadeModel { mode: GLenum },
+    glFrontFace { mode: GLenum },
+    glCullFace { mode: GLenum },
+    glPolygonMode { face: GLenum, mode: GLenum },
+    glRectf { x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat },
+    glRectd { x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble },
+    glRecti { x1: GLint, y1: GLint, x2: GLint, y2: GLint },
+    glRects { x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort },
+    glInitNames {},
+    glPushName { name: GLuint },
+    glPopName {},
+    glLoadName { name: GLuint },
+    glPassThrough { token: GLfloat },
+    glCallList { list: GLuint },
+    glListBase { base: GLuint },
+    glPointSize { size: GLfloat },
+    glPointParameterf { pname: GLenum, param: GLfloat },
+    glPointParameteri { pname: GLenum, param: GLint },
+    glPointParameterfv { pname: GLenum, params: Vec<GLfloat> },
+    glPointParameteriv { pname: GLenum, params: Vec<GLint> },
+    glLineWidth { width: GLfloat },
+    glLineStipple { factor: GLint, pattern: GLushort },
+    glPolygonOffset { factor: GLfloat, units: GLfloat },
+    glSampleCoverage { value: GLclampf, invert: GLboolean },
+    glRectsv { v1: Vec<GLshort>, v2: Vec<GLshort> },
+    glRectiv { v1: Vec<GLint>, v2: Vec<GLint> },
+    glRectfv { v1: Vec<GLfloat>, v2: Vec<GLfloat> },
+    glRectdv { v1: Vec<GLdouble>, v2: Vec<GLdouble> },
+    glFogf { pname: GLenum, param: GLfloat },
+    glFogi { pname: GLenum, param: GLint },
+    glFogfv { pname: GLenum, params: Vec<GLfloat> },
+    glFogiv { pname: GLenum, params: Vec<GLint> },
+    glHint { target: GLenum, mode: GLenum },
+    glScissor { x: GLint, y: GLint, width: GLsizei, height: GLsizei },
+    glAlphaFunc { func: GLenum, reference: GLclampf },
+    glStencilFunc { func: GLenum, reference: GLint, mask: GLuint },
+    glStencilOp { fail: GLenum, zfail: GLenum, zpass: GLenum },
+    glDepthFunc { func: GLenum },
+    glBlendFunc { sfactor: GLenum, dfactor: GLenum },
+    glBlendFuncSeparate { sfactor_rgb: GLenum, dfactor_rgb: GLenum, sfactor_alpha: GLenum, dfactor_alpha: GLenum },
+    glBlendColor { red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf },
+    glBlendEquation { mode: GLenum },
+    glLogicOp { opcode: GLenum },
+    glDrawBuffer { mode: GLenum },
+    glIndexMask { mask: GLuint },
+    glColorMask { red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean },
+    glDepthMask { flag: GLboolean },
+    glStencilMask { mask: GLuint },
+    glClear { mask: GLbitfield },
+    glClearColor { red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf },
+    glClearIndex { c: GLfloat },
+    glClearDepth { depth: GLclampd },
+    glClearStencil { s: GLint },
+    glClearAccum { red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat },
+    glAccum { op: GLenum, value: GLfloat },
+    glPixelTransferf { pname: GLenum, param: GLfloat },
+    glPixelTransferi { pname: GLenum, param: GLint },
+    glPixelMapfv { map: GLenum, mapsize: GLsizei, values: Vec<GLfloat> },
+    glPixelMapuiv { map: GLenum, mapsize: GLsizei, values: Vec<GLuint> },
+    glPixelMapusv { map: GLenum, mapsize: GLsizei, values: Vec<GLushort> },
+    glPixelZoom { xfactor: GLfloat, yfactor: GLfloat },
+    glReadBuffer { mode: GLenum },
+    glSecondaryColor3b { red: GLbyte, green: GLbyte, blue: GLbyte },
+    glSecondaryColor3bv { v: Vec<GLbyte> },
+    glSecondaryColor3s { red: GLshort, green: GLshort, blue: GLshort },
+    glSecondaryColor3sv { v: Vec<GLshort> },
+    glSecondaryColor3i { red: GLint, green: GLint, blue: GLint },
+    glSecondaryColor3iv { v: Vec<GLint> },
+    glSecondaryColor3f { red: GLfloat, green: GLfloat, blue: GLfloat },
+    glSecondaryColor3fv { v: Vec<GLfloat> },
+    glSecondaryColor3d { red: GLdouble, green: GLdouble, blue: GLdouble },
+    glSecondaryColor3dv { v: Vec<GLdouble> },
+    glSecondaryColor3ub { red: GLubyte, green: GLubyte, blue: GLubyte },
+    glSecondaryColor3ubv { v: Vec<GLubyte> },
+    glSecondaryColor3us { red: GLushort, green: GLushort, blue: GLushort },
+    glSecondaryColor3usv { v: Vec<GLushort> },
+    glSecondaryColor3ui { red: GLuint, green: GLuint, blue: GLuint },
+    glSecondaryColor3uiv { v: Vec<GLuint> },
+    glFogCoordf { coord: GLfloat },
+    glFogCoordfv { coord: Vec<GLfloat> },
+    glFogCoordd { coord: GLdouble },
+    glFogCoorddv { coord: Vec<GLdouble> },
+    glWindowPos2s { x: GLshort, y: GLshort },
+    glWindowPos2sv { v: Vec<GLshort> },
+    glWindowPos2i { x: GLint, y: GLint },
+    glWindowPos2iv { v: Vec<GLint> },
+    glWindowPos2f { x: GLfloat, y: GLfloat },
+    glWindowPos2fv { v: Vec<GLfloat> },
+    glWindowPos2d { x: GLdouble, y: GLdouble },
+    glWindowPos2dv { v: Vec<GLdouble> },
+    glWindowPos3s { x: GLshort, y: GLshort, z: GLshort },
+    glWindowPos3sv { v: Vec<GLshort> },
+    glWindowPos3i { x: GLint, y: GLint, z: GLint },
+    glWindowPos3iv { v: Vec<GLint> },
+    glWindowPos3f { x: GLfloat, y: GLfloat, z: GLfloat },
+    glWindowPos3fv { v: Vec<GLfloat> },
+    glWindowPos3d { x: GLdouble, y: GLdouble, z: GLdouble },
+    glWindowPos3dv { v: Vec<GLdouble> },
+    glBitmap { width: GLsizei, height: GLsizei, _xorig: GLfloat, _yorig: GLfloat, xmove: GLfloat, ymove: GLfloat, _bitmap: Vec<GLubyte> },
+    glCopyPixels { _x: GLint, _y: GLint, width: GLsizei, height: GLsizei, kind: GLenum },
+    glBeginQuery { target: GLenum, id: GLuint },
+    glEndQuery { target: GLenum },
+    glIndexd { c: GLdouble },
+    glIndexdv { c: Vec<GLdouble> },
+    glIndexf { c: GLfloat },
+    glIndexfv { c: Vec<GLfloat> },
+    glIndexi { c: GLint },
+    glIndexiv { c: Vec<GLint> },
+    glIndexs { c: GLshort },
+    glIndexsv { c: Vec<GLshort> },
+    glIndexub { c: GLubyte },
+    glIndexubv { c: Vec<GLubyte> },
+}
+
+impl TableCommand {
+    /// Runs the command as its entry point would, on the recorded values.
+    pub fn execute(&self, ctx: &mut Context) -> GlResult {
+        match self {
+            TableCommand::glBegin { mode } => {
+                let mode = *mode;
+                ctx.begin(mode)
+            }
+            TableCommand::glEnd {} => {
+                ctx.end()
+            }
+            TableCommand::glViewport { x, y, width, height } => {
+                let x = *x;
+                let y = *y;
+                let width = *width;
+                let height = *height;
+                ctx.viewport(x, y, width, height)
+            }
+            TableCommand::glDepthRange { near, far } => {
+                let near = *near;
+                let far = *far;
+                ctx.depth_range(near, far)
+            }
+            TableCommand::glLightf { light, pname, param } => {
+                let light = *light;
+                let pname = *pname;
+                let param = *param;
+                ctx.light_scalar(light, pname, param)
+            }
+            TableCommand::glLighti { light, pname, param } => {
+                let light = *light;
+                let pname = *pname;
+                let param = *param;
+                ctx.light_scalar(light, pname, param as f32)
+            }
+            TableCommand::glLightfv { light, pname, params } => {
+                let light = *light;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.light(light, pname, params)
+            }
+            TableCommand::glLightiv { light, pname, params } => {
+                let light = *light;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.light_i(light, pname, params)
+            }
+            TableCommand::glMaterialf { face, pname, param } => {
+                let face = *face;
+                let pname = *pname;
+                let param = *param;
+                ctx.material_scalar(face, pname, param)
+            }
+            TableCommand::glMateriali { face, pname, param } => {
+                let face = *face;
+                let pname = *pname;
+                let param = *param;
+                ctx.material_scalar(face, pname, param as f32)
+            }
+            TableCommand::glMaterialfv { face, pname, params } => {
+                let face = *face;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.material(face, pname, params)
+            }
+            TableCommand::glMaterialiv { face, pname, params } => {
+                let face = *face;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.material_i(face, pname, params)
+            }
+            TableCommand::glLightModelf { pname, param } => {
+                let pname = *pname;
+                let param = *param;
+                ctx.light_model_scalar(pname, param)
+            }
+            TableCommand::glLightModeli { pname, param } => {
+                let pname = *pname;
+                let param = *param;
+                ctx.light_model_scalar(pname, param as f32)
+            }
+            TableCommand::glLightModelfv { pname, params } => {
+                let pname = *pname;
+                let params = &params[..];
+                ctx.light_model(pname, params)
+            }
+            TableCommand::glLightModeliv { pname, params } => {
+                let pname = *pname;
+                let params = &params[..];
+                ctx.light_model_i(pname, params)
+            }
+            TableCommand::glColorMaterial { face, mode } => {
+                let face = *face;
+                let mode = *mode;
+                ctx.color_material(face, mode)
+            }
+            TableCommand::glEnable { cap } => {
+                let cap = *cap;
+                ctx.set_capability(cap, true)
+            }
+            TableCommand::glDisable { cap } => {
+                let cap = *cap;
+                ctx.set_capability(cap, false)
+            }
+            TableCommand::glMatrixMode { mode } => {
+                let mode = *mode;
+                ctx.matrix_mode(mode)
+            }
+            TableCommand::glLoadIdentity {} => {
+                ctx.load_identity()
+            }
+            TableCommand::glLoadMatrixf { m } => {
+                let m = &m[..];
+                ctx.matrix_values(m, Context::load_matrix)
+            }
+            TableCommand::glLoadMatrixd { m } => {
+                let m = &m[..];
+                ctx.matrix_values(m, Context::load_matrix)
+            }
+            TableCommand::glMultMatrixf { m } => {
+                let m = &m[..];
+                ctx.matrix_values(m, Context::mult_matrix)
+            }
+            TableCommand::glMultMatrixd { m } => {
+                let m = &m[..];
+                ctx.matrix_values(m, Context::mult_matrix)
+            }
+            TableCommand::glLoadTransposeMatrixf { m } => {
+                let m = &m[..];
+                ctx.matrix_values(m, Context::load_transpose_matrix)
+            }
+            TableCommand::glLoadTransposeMatrixd { m } => {
+                let m = &m[..];
+                ctx.matrix_values(m, Context::load_transpose_matrix)
+            }
+            TableCommand::glMultTransposeMatrixf { m } => {
+                let m = &m[..];
+                ctx.matrix_values(m, Context::mult_transpose_matrix)
+            }
+            TableCommand::glMultTransposeMatrixd { m } => {
+                let m = &m[..];
+                ctx.matrix_values(m, Context::mult_transpose_matrix)
+            }
+            TableCommand::glTranslatef { x, y, z } => {
+                let x = *x;
+                let y = *y;
+                let z = *z;
+                ctx.translate(x.into(), y.into(), z.into())
+            }
+            TableCommand::glTranslated { x, y, z } => {
+                let x = *x;
+                let y = *y;
+                let z = *z;
+                ctx.translate(x, y, z)
+            }
+            TableCommand::glRotatef { angle, x, y, z } => {
+                let angle = *angle;
+                let x = *x;
+                let y = *y;
+                let z = *z;
+                ctx.rotate(angle.into(), x.into(), y.into(), z.into())
+            }
+            TableCommand::glRotated { angle, x, y, z } => {
+                let angle = *angle;
+                let x = *x;
+                let y = *y;
+                let z = *z;
+                ctx.rotate(angle, x, y, z)
+            }
+            TableCommand::glScalef { x, y, z } => {
+                let x = *x;
+                let y = *y;
+                let z = *z;
+                ctx.scale(x.into(), y.into(), z.into())
+            }
+            TableCommand::glScaled { x, y, z } => {
+                let x = *x;
+                let y = *y;
+                let z = *z;
+                ctx.scale(x, y, z)
+            }
+            TableCommand::glFrustum { left, right, bottom, top, near, far } => {
+                let left = *left;
+                let right = *right;
+                let bottom = *bottom;
+                let top = *top;
+                let near = *near;
+                let far = *far;
+                ctx.frustum(left, right, bottom, top, near, far)
+            }
+            TableCommand::glOrtho { left, right, bottom, top, near, far } => {
+                let left = *left;
+                let right = *right;
+                let bottom = *bottom;
+                let top = *top;
+                let near = *near;
+                let far = *far;
+                ctx.ortho(left, right, bottom, top, near, far)
+            }
+            TableCommand::glPushMatrix {} => {
+                ctx.push_matrix()
+            }
+            TableCommand::glPopMatrix {} => {
+                ctx.pop_matrix()
+            }
+            TableCommand::glClipPlane { plane, equation } => {
+                let plane = *plane;
+                let equation = &equation[..];
+                ctx.clip_plane(plane, equation.try_into().map_err(|_| GlError::InvalidValue)?)
+            }
+            TableCommand::glShadeModel { mode } => {
+                let mode = *mode;
+                ctx.shade_model(mode)
+            }
+            TableCommand::glFrontFace { mode } => {
+                let mode = *mode;
+                ctx.front_face(mode)
+            }
+            TableCommand::glCullFace { mode } => {
+                let mode = *mode;
+                ctx.cull_face(mode)
+            }
+            TableCommand::glPolygonMode { face, mode } => {
+                let face = *face;
+                let mode = *mode;
+                ctx.polygon_mode(face, mode)
+            }
+            TableCommand::glRectf { x1, y1, x2, y2 } => {
+                let x1 = *x1;
+                let y1 = *y1;
+                let x2 = *x2;
+                let y2 = *y2;
+                ctx.rect(x1, y1, x2, y2)
+            }
+            TableCommand::glRectd { x1, y1, x2, y2 } => {
+                let x1 = *x1;
+                let y1 = *y1;
+                let x2 = *x2;
+                let y2 = *y2;
+                ctx.rect(x1 as f32, y1 as f32, x2 as f32, y2 as f32)
+            }
+            TableCommand::glRecti { x1, y1, x2, y2 } => {
+                let x1 = *x1;
+                let y1 = *y1;
+                let x2 = *x2;
+                let y2 = *y2;
+                ctx.rect(x1 as f32, y1 as f32, x2 as f32, y2 as f32)
+            }
+            TableCommand::glRects { x1, y1, x2, y2 } => {
+                let x1 = *x1;
+                let y1 = *y1;
+                let x2 = *x2;
+                let y2 = *y2;
+                ctx.rect(x1.into(), y1.into(), x2.into(), y2.into())
+            }
+            TableCommand::glInitNames {} => {
+                ctx.init_names()
+            }
+            TableCommand::glPushName { name } => {
+                let name = *name;
+                ctx.push_name(name)
+            }
+            TableCommand::glPopName {} => {
+                ctx.pop_name()
+            }
+            TableCommand::glLoadName { name } => {
+                let name = *name;
+                ctx.load_name(name)
+            }
+            TableCommand::glPassThrough { token } => {
+                let token = *token;
+                ctx.pass_through(token)
+            }
+            TableCommand::glCallList { list } => {
+                let list = *list;
+                ctx.call_list(list)
+            }
+            TableCommand::glListBase { base } => {
+                let base = *base;
+                ctx.list_base(base)
+            }
+            TableCommand::glPointSize { size } => {
+                let size = *size;
+                ctx.point_size(size)
+            }
+            TableCommand::glPointParameterf { pname, param } => {
+                let pname = *pname;
+                let param = *param;
+                ctx.point_parameter_scalar(pname, param)
+            }
+            TableCommand::glPointParameteri { pname, param } => {
+                let pname = *pname;
+                let param = *param;
+                ctx.point_parameter_scalar(pname, param as f32)
+            }
+            TableCommand::glPointParameterfv { pname, params } => {
+                let pname = *pname;
+                let params = &params[..];
+                ctx.point_parameter(pname, params)
+            }
+            TableCommand::glPointParameteriv { pname, params } => {
+                let pname = *pname;
+                let params = &params[..];
+                ctx.point_parameter_i(pname, params)
+            }
+            TableCommand::glLineWidth { width } => {
+                let width = *width;
+                ctx.line_width(width)
+            }
+            TableCommand::glLineStipple { factor, pattern } => {
+                let factor = *factor;
+                let pattern = *pattern;
+                ctx.line_stipple(factor, pattern)
+            }
+            TableCommand::glPolygonOffset { factor, units } => {
+                let factor = *factor;
+                let units = *units;
+                ctx.polygon_offset(factor, units)
+            }
+            TableCommand::glSampleCoverage { value, invert } => {
+                let value = *value;
+                let invert = *invert;
+                ctx.sample_coverage(value, invert != GL_FALSE)
+            }
+            TableCommand::glRectsv { v1, v2 } => {
+                let v1 = &v1[..];
+                let v2 = &v2[..];
+                ctx.rect_v(v1, v2)
+            }
+            TableCommand::glRectiv { v1, v2 } => {
+                let v1 = &v1[..];
+                let v2 = &v2[..];
+                ctx.rect_v(v1, v2)
+            }
+            TableCommand::glRectfv { v1, v2 } => {
+                let v1 = &v1[..];
+                let v2 = &v2[..];
+                ctx.rect_v(v1, v2)
+            }
+            TableCommand::glRectdv { v1, v2 } => {
+                let v1 = &v1[..];
+                let v2 = &v2[..];
+                ctx.rect_v(v1, v2)
+            }
+            TableCommand::glFogf { pname, param } => {
+                let pname = *pname;
+                let param = *param;
+                ctx.fog_scalar(pname, param)
+            }
+            TableCommand::glFogi { pname, param } => {
+                let pname = *pname;
+                let param = *param;
+                ctx.fog_scalar(pname, param as f32)
+            }
+            TableCommand::glFogfv { pname, params } => {
+                let pname = *pname;
+                let params = &params[..];
+                ctx.fog(pname, params)
+            }
+            TableCommand::glFogiv { pname, params } => {
+                let pname = *pname;
+                let params = &params[..];
+                ctx.fog_i(pname, params)
+            }
+            TableCommand::glHint { target, mode } => {
+                let target = *target;
+                let mode = *mode;
+                ctx.hint(target, mode)
+            }
+            TableCommand::glScissor { x, y, width, height } => {
+                let x = *x;
+                let y = *y;
+                let width = *width;
+                let height = *height;
+                ctx.scissor(x, y, width, height)
+            }
+            TableCommand::glAlphaFunc { func, reference } => {
+                let func = *func;
+                let reference = *reference;
+                ctx.alpha_func(func, reference)
+            }
+            TableCommand::glStencilFunc { func, reference, mask } => {
+                let func = *func;
+                let reference = *reference;
+                let mask = *mask;
+                ctx.stencil_func(func, reference, mask)
+            }
+            TableCommand::glStencilOp { fail, zfail, zpass } => {
+                let fail = *fail;
+                let zfail = *zfail;
+                let zpass = *zpass;
+                ctx.stencil_op(fail, zfail, zpass)
+            }
+            TableCommand::glDepthFunc { func } => {
+                let func = *func;
+                ctx.depth_func(func)
+            }
+            TableCommand::glBlendFunc { sfactor, dfactor } => {
+                let sfactor = *sfactor;
+                let dfactor = *dfactor;
+                ctx.blend_func(sfactor, dfactor)
+            }
+            TableCommand::glBlendFuncSeparate { sfactor_rgb, dfactor_rgb, sfactor_alpha, dfactor_alpha } => {
+                let sfactor_rgb = *sfactor_rgb;
+                let dfactor_rgb = *dfactor_rgb;
+                let sfactor_alpha = *sfactor_alpha;
+                let dfactor_alpha = *dfactor_alpha;
+                ctx.blend_func_separate(sfactor_rgb, dfactor_rgb, sfactor_alpha, dfactor_alpha)
+            }
+            TableCommand::glBlendColor { red, green, blue, alpha } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                let alpha = *alpha;
+                ctx.blend_color(glam::Vec4::new(red, green, blue, alpha))
+            }
+            TableCommand::glBlendEquation { mode } => {
+                let mode = *mode;
+                ctx.blend_equation(mode)
+            }
+            TableCommand::glLogicOp { opcode } => {
+                let opcode = *opcode;
+                ctx.logic_op(opcode)
+            }
+            TableCommand::glDrawBuffer { mode } => {
+                let mode = *mode;
+                ctx.draw_buffer(mode)
+            }
+            TableCommand::glIndexMask { mask } => {
+                let mask = *mask;
+                ctx.index_mask(mask)
+            }
+            TableCommand::glColorMask { red, green, blue, alpha } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                let alpha = *alpha;
+                ctx.color_mask([red, green, blue, alpha].map(|c| c != GL_FALSE))
+            }
+            TableCommand::glDepthMask { flag } => {
+                let flag = *flag;
+                ctx.depth_mask(flag != GL_FALSE)
+            }
+            TableCommand::glStencilMask { mask } => {
+                let mask = *mask;
+                ctx.stencil_mask(mask)
+            }
+            TableCommand::glClear { mask } => {
+                let mask = *mask;
+                ctx.clear(mask)
+            }
+            TableCommand::glClearColor { red, green, blue, alpha } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                let alpha = *alpha;
+                ctx.clear_color(glam::Vec4::new(red, green, blue, alpha))
+            }
+            TableCommand::glClearIndex { c } => {
+                let c = *c;
+                ctx.clear_index(c)
+            }
+            TableCommand::glClearDepth { depth } => {
+                let depth = *depth;
+                ctx.clear_depth(depth)
+            }
+            TableCommand::glClearStencil { s } => {
+                let s = *s;
+                ctx.clear_stencil(s)
+            }
+            TableCommand::glClearAccum { red, green, blue, alpha } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                let alpha = *alpha;
+                ctx.clear_accum(glam::Vec4::new(red, green, blue, alpha))
+            }
+            TableCommand::glAccum { op, value } => {
+                let op = *op;
+                let value = *value;
+                ctx.accum(op, value)
+            }
+            TableCommand::glPixelTransferf { pname, param } => {
+                let pname = *pname;
+                let param = *param;
+                ctx.pixel_transfer(pname, param)
+            }
+            TableCommand::glPixelTransferi { pname, param } => {
+                let pname = *pname;
+                let param = *param;
+                ctx.pixel_transfer(pname, param as f32)
+            }
+            TableCommand::glPixelMapfv { map, mapsize, values } => {
+                let map = *map;
+                let mapsize = *mapsize;
+                let values = &values[..];
+                ctx.pixel_map(map, mapsize, values)
+            }
+            TableCommand::glPixelMapuiv { map, mapsize, values } => {
+                let map = *map;
+                let mapsize = *mapsize;
+                let values = &values[..];
+                ctx.pixel_map_integers(map, mapsize, values, u32::MAX.into())
+            }
+            TableCommand::glPixelMapusv { map, mapsize, values } => {
+                let map = *map;
+                let mapsize = *mapsize;
+                let values = &values[..];
+                ctx.pixel_map_integers(map, mapsize, values, u16::MAX.into())
+            }
+            TableCommand::glPixelZoom { xfactor, yfactor } => {
+                let xfactor = *xfactor;
+                let yfactor = *yfactor;
+                ctx.pixel_zoom(xfactor, yfactor)
+            }
+            TableCommand::glReadBuffer { mode } => {
+                let mode = *mode;
+                ctx.read_buffer(mode)
+            }
+            TableCommand::glSecondaryColor3b { red, green, blue } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+            }
+            TableCommand::glSecondaryColor3bv { v } => {
+                let v = &v[..];
+                ctx.secondary_color_v(v)
+            }
+            TableCommand::glSecondaryColor3s { red, green, blue } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+            }
+            TableCommand::glSecondaryColor3sv { v } => {
+                let v = &v[..];
+                ctx.secondary_color_v(v)
+            }
+            TableCommand::glSecondaryColor3i { red, green, blue } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+            }
+            TableCommand::glSecondaryColor3iv { v } => {
+                let v = &v[..];
+                ctx.secondary_color_v(v)
+            }
+            TableCommand::glSecondaryColor3f { red, green, blue } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+            }
+            TableCommand::glSecondaryColor3fv { v } => {
+                let v = &v[..];
+                ctx.secondary_color_v(v)
+            }
+            TableCommand::glSecondaryColor3d { red, green, blue } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+            }
+            TableCommand::glSecondaryColor3dv { v } => {
+                let v = &v[..];
+                ctx.secondary_color_v(v)
+            }
+            TableCommand::glSecondaryColor3ub { red, green, blue } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+            }
+            TableCommand::glSecondaryColor3ubv { v } => {
+                let v = &v[..];
+                ctx.secondary_color_v(v)
+            }
+            TableCommand::glSecondaryColor3us { red, green, blue } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+            }
+            TableCommand::glSecondaryColor3usv { v } => {
+                let v = &v[..];
+                ctx.secondary_color_v(v)
+            }
+            TableCommand::glSecondaryColor3ui { red, green, blue } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                { ctx.secondary_color_of([red, green, blue]); Ok(()) }
+            }
+            TableCommand::glSecondaryColor3uiv { v } => {
+                let v = &v[..];
+                ctx.secondary_color_v(v)
+            }
+            TableCommand::glFogCoordf { coord } => {
+                let coord = *coord;
+                { ctx.fog_coord(coord); Ok(()) }
+            }
+            TableCommand::glFogCoordfv { coord } => {
+                let coord = &coord[..];
+                ctx.fog_coord_v(coord)
+            }
+            TableCommand::glFogCoordd { coord } => {
+                let coord = *coord;
+                { ctx.fog_coord(coord as f32); Ok(()) }
+            }
+            TableCommand::glFogCoorddv { coord } => {
+                let coord = &coord[..];
+                ctx.fog_coord_v(coord)
+            }
+            TableCommand::glWindowPos2s { x, y } => {
+                let x = *x;
+                let y = *y;
+                ctx.window_pos_of(x, y, 0 as GLshort)
+            }
+            TableCommand::glWindowPos2sv { v } => {
+                let v = &v[..];
+                ctx.window_pos_v(v)
+            }
+            TableCommand::glWindowPos2i { x, y } => {
+                let x = *x;
+                let y = *y;
+                ctx.window_pos_of(x, y, 0 as GLint)
+            }
+            TableCommand::glWindowPos2iv { v } => {
+                let v = &v[..];
+                ctx.window_pos_v(v)
+            }
+            TableCommand::glWindowPos2f { x, y } => {
+                let x = *x;
+                let y = *y;
+                ctx.window_pos_of(x, y, 0 as GLfloat)
+            }
+            TableCommand::glWindowPos2fv { v } => {
+                let v = &v[..];
+                ctx.window_pos_v(v)
+            }
+            TableCommand::glWindowPos2d { x, y } => {
+                let x = *x;
+                let y = *y;
+                ctx.window_pos_of(x, y, 0 as GLdouble)
+            }
+            TableCommand::glWindowPos2dv { v } => {
+                let v = &v[..];
+                ctx.window_pos_v(v)
+            }
+            TableCommand::glWindowPos3s { x, y, z } => {
+                let x = *x;
+                let y = *y;
+                let z = *z;
+                ctx.window_pos_of(x, y, z)
+            }
+            TableCommand::glWindowPos3sv { v } => {
+                let v = &v[..];
+                ctx.window_pos_v(v)
+            }
+            TableCommand::glWindowPos3i { x, y, z } => {
+                let x = *x;
+                let y = *y;
+                let z = *z;
+                ctx.window_pos_of(x, y, z)
+            }
+            TableCommand::glWindowPos3iv { v } => {
+                let v = &v[..];
+                ctx.window_pos_v(v)
+            }
+            TableCommand::glWindowPos3f { x, y, z } => {
+                let x = *x;
+                let y = *y;
+                let z = *z;
+                ctx.window_pos_of(x, y, z)
+            }
+            TableCommand::glWindowPos3fv { v } => {
+                let v = &v[..];
+                ctx.window_pos_v(v)
+            }
+            TableCommand::glWindowPos3d { x, y, z } => {
+                let x = *x;
+                let y = *y;
+                let z = *z;
+                ctx.window_pos_of(x, y, z)
+            }
+            TableCommand::glWindowPos3dv { v } => {
+                let v = &v[..];
+                ctx.window_pos_v(v)
+            }
+            TableCommand::glBitmap { width, height, _xorig, _yorig, xmove, ymove, _bitmap } => {
+                let width = *width;
+                let height = *height;
+                let _xorig = *_xorig;
+                let _yorig = *_yorig;
+                let xmove = *xmove;
+                let ymove = *ymove;
+                let _bitmap = &_bitmap[..];
+                ctx.bitmap(width, height, xmove, ymove)
+            }
+            TableCommand::glCopyPixels { _x, _y, width, height, kind } => {
+                let _x = *_x;
+                let _y = *_y;
+                let width = *width;
+                let height = *height;
+                let kind = *kind;
+                ctx.copy_pixels(width, height, kind)
+            }
+            TableCommand::glBeginQuery { target, id } => {
+                let target = *target;
+                let id = *id;
+                ctx.begin_query(target, id)
+            }
+            TableCommand::glEndQuery { target } => {
+                let target = *target;
+                ctx.end_query(target)
+            }
+            TableCommand::glIndexd { c } => {
+                let c = *c;
+                { ctx.index(c as f32); Ok(()) }
+            }
+            TableCommand::glIndexdv { c } => {
+                let c = &c[..];
+                ctx.index_v(c)
+            }
+            TableCommand::glIndexf { c } => {
+                let c = *c;
+                { ctx.index(c); Ok(()) }
+            }
+            TableCommand::glIndexfv { c } => {
+                let c = &c[..];
+                ctx.index_v(c)
+            }
+            TableCommand::glIndexi { c } => {
+                let c = *c;
+                { ctx.index(c as f32); Ok(()) }
+            }
+            TableCommand::glIndexiv { c } => {
+                let c = &c[..];
+                ctx.index_v(c)
+            }
+            TableCommand::glIndexs { c } => {
+                let c = *c;
+                { ctx.index(c as f32); Ok(()) }
+            }
+            TableCommand::glIndexsv { c } => {
+                let c = &c[..];
+                ctx.index_v(c)
+            }
+            TableCommand::glIndexub { c } => {
+                let c = *c;
+                { ctx.index(c as f32); Ok(()) }
+            }
+            TableCommand::glIndexubv { c } => {
+                let c = &c[..];
+                ctx.index_v(c)
+            }
+        }
+    }
 }

@@ -14,13 +14,14 @@ mod feedback;
 #[rustfmt::skip]
 mod generated;
 mod lighting;
-mod matrix;
+mod list;
 mod query;
 mod raster;
 mod raster_pos;
 mod select;
 
 pub use feedback::ApplicationFloats;
+pub use generated::TableCommand;
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 

@@ -2,13 +2,13 @@
 
 use glam::Vec4;
 
-use super::attribs::read_vector;
-use super::with_context;
+use super::attribs::{read_vector, record_or_run};
+use crate::commands::list::Command;
 use crate::gl::*;
 use crate::state::convert::Component;
 
 fn raster_pos(v: [f32; 4]) {
-    with_context(|ctx| ctx.raster_pos(Vec4::from_array(v)))
+    record_or_run(Command::RasterPos(Vec4::from_array(v)))
 }
 
 #[unsafe(no_mangle)]

@@ -1,4 +1,4 @@
-//! glSelectBuffer, glInitNames, glPushName, glPopName, glLoadName (§5.2); glRenderMode, in
+//! glSelectBuffer (§5.2; the name stack commands are lines of entry_points.txt); glRenderMode, in
 //! capi/feedback.rs, writes the hit records through `write_hit_records`.
 
 use super::with_context;
@@ -9,26 +9,6 @@ use crate::gl::*;
 #[unsafe(no_mangle)]
 pub extern "C" fn glSelectBuffer(size: GLsizei, buffer: *mut GLuint) {
     with_context(|ctx| ctx.select_buffer(size, buffer as usize))
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glInitNames() {
-    with_context(|ctx| ctx.init_names())
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glPushName(name: GLuint) {
-    with_context(|ctx| ctx.push_name(name))
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glPopName() {
-    with_context(|ctx| ctx.pop_name())
-}
-
-#[unsafe(no_mangle)]
-pub extern "C" fn glLoadName(name: GLuint) {
-    with_context(|ctx| ctx.load_name(name))
 }
 
 /// Writes the hit records of a selection that ended to the buffer glSelectBuffer gave.

@@ -131,7 +131,7 @@ impl<'a> ArraySources<'a> {
 
 /// What the enabled arrays give one element; `None` for an array that is not enabled.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-struct Element {
+pub struct ArrayElementValues {
     position: Option<Vec4>,
     normal: Option<Vec3>,
     color: Option<Vec4>,
@@ -179,8 +179,8 @@ impl<'a> ArrayReader<'a> {
         Some(array.read(kind, bytes, self.base, index))
     }
 
-    fn element(&self, index: usize) -> Element {
-        Element {
+    fn element(&self, index: usize) -> ArrayElementValues {
+        ArrayElementValues {
             position: self.read(ArrayKind::Vertex, index).map(Vec4::from_array),
             normal: self
                 .read(ArrayKind::Normal, index)
@@ -197,6 +197,38 @@ impl<'a> ArrayReader<'a> {
     }
 }
 
+/// A vertex-array draw compiled into a display list: the enabled arrays as they were, each
+/// with a copy of its bytes from element `base` to the last element the draw uses (buffer
+/// objects' data included: §5.4 dereferences them at compile time), and the indices.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RecordedDraw {
+    mode: GLenum,
+    base: usize,
+    arrays: [Option<(ClientArray, Vec<u8>)>; ARRAY_KINDS],
+    indices: RecordedIndices,
+}
+
+/// `ElementIndices` that own their bytes.
+#[derive(Clone, Debug, PartialEq)]
+enum RecordedIndices {
+    Sequential { first: usize, count: usize },
+    Listed { index_type: GLenum, bytes: Vec<u8> },
+}
+
+impl RecordedIndices {
+    fn borrow(&self) -> ElementIndices<'_> {
+        match *self {
+            RecordedIndices::Sequential { first, count } => {
+                ElementIndices::Sequential { first, count }
+            }
+            RecordedIndices::Listed {
+                index_type,
+                ref bytes,
+            } => ElementIndices::Listed { index_type, bytes },
+        }
+    }
+}
+
 /// GL_INVALID_ENUM unless `mode` is a primitive (§2.6.1).
 fn check_mode(mode: GLenum) -> GlResult {
     if mode > GL_POLYGON {
@@ -204,6 +236,23 @@ fn check_mode(mode: GLenum) -> GlResult {
     } else {
         Ok(())
     }
+}
+
+/// The checks every draw of `indices` makes when it runs.
+fn check_draw(ctx: &Context, mode: GLenum, indices: &ElementIndices) -> GlResult {
+    ctx.outside_begin_end()?;
+    check_mode(mode)?;
+    match *indices {
+        ElementIndices::Listed { index_type, .. } => {
+            index_size(index_type).ok_or(GlError::InvalidEnum)?;
+        }
+        ElementIndices::Sequential { first, count } => {
+            if count > 0 && first.checked_add(count - 1).is_none() {
+                return Err(GlError::InvalidValue);
+            }
+        }
+    }
+    Ok(())
 }
 
 impl Context {
@@ -427,10 +476,26 @@ impl Context {
     /// current attributes become the element's (and an enabled color material follows the
     /// color). Legal between glBegin and glEnd, where the vertex joins the primitive.
     pub fn array_element_from(&mut self, index: usize, sources: &ArraySources) -> GlResult {
+        let element = self.array_element_values(index, sources)?;
+        self.apply_array_element(&element);
+        Ok(())
+    }
+
+    /// The values the enabled arrays give element `index` (what glArrayElement compiles).
+    pub fn array_element_values(
+        &self,
+        index: usize,
+        sources: &ArraySources,
+    ) -> GlResult<ArrayElementValues> {
         let arrays = self.arrays;
         let stores = self.array_stores(&arrays)?;
         let sources = with_stores(&arrays, sources, &stores);
-        let element = ArrayReader::new(&arrays, &sources, index, index)?.element(index);
+        Ok(ArrayReader::new(&arrays, &sources, index, index)?.element(index))
+    }
+
+    /// glArrayElement's calls: glEdgeFlag, glTexCoord, glColor, glNormal and glVertex with
+    /// the values of the enabled arrays.
+    pub(crate) fn apply_array_element(&mut self, element: &ArrayElementValues) {
         if let Some(flag) = element.edge_flag {
             self.edge_flag(flag);
         }
@@ -455,7 +520,6 @@ impl Context {
         if let Some(position) = element.position {
             self.vertex(position);
         }
-        Ok(())
     }
 
     /// glDrawArrays / glDrawElements / glDrawRangeElements from the arrays' bytes: the
@@ -475,18 +539,7 @@ impl Context {
         sources: &ArraySources,
         indices: &ElementIndices,
     ) -> GlResult {
-        self.outside_begin_end()?;
-        check_mode(mode)?;
-        match *indices {
-            ElementIndices::Listed { index_type, .. } => {
-                index_size(index_type).ok_or(GlError::InvalidEnum)?;
-            }
-            ElementIndices::Sequential { first, count } => {
-                if count > 0 && first.checked_add(count - 1).is_none() {
-                    return Err(GlError::InvalidValue);
-                }
-            }
-        }
+        check_draw(self, mode, indices)?;
         let arrays = self.arrays;
         if !arrays.get(ArrayKind::Vertex).enabled {
             return Ok(());
@@ -502,6 +555,70 @@ impl Context {
         let reader = ArrayReader::new(&arrays, &sources, first, last)?;
         let fetch = ArrayFetch::new(reader.base, reader.arrays);
         self.draw_arrays_with(mode, &fetch, indices);
+        Ok(())
+    }
+
+    /// A draw compiled into a display list (§5.4): `draw_arrays_from`'s checks, then a copy
+    /// of the elements the draw uses, so that the list keeps them whatever later happens to
+    /// the arrays.
+    pub fn record_draw(
+        &self,
+        mode: GLenum,
+        sources: &ArraySources,
+        indices: &ElementIndices,
+    ) -> GlResult<RecordedDraw> {
+        check_draw(self, mode, indices)?;
+        let arrays = self.arrays;
+        let mut draw = RecordedDraw {
+            mode,
+            base: 0,
+            arrays: Default::default(),
+            indices: match *indices {
+                ElementIndices::Sequential { first, count } => {
+                    RecordedIndices::Sequential { first, count }
+                }
+                ElementIndices::Listed { index_type, bytes } => RecordedIndices::Listed {
+                    index_type,
+                    bytes: bytes.to_vec(),
+                },
+            },
+        };
+        let (true, Some((first, last))) = (arrays.get(ArrayKind::Vertex).enabled, indices.range())
+        else {
+            return Ok(draw); // draws nothing
+        };
+        let stores = self.array_stores(&arrays)?;
+        let sources = with_stores(&arrays, sources, &stores);
+        let reader = ArrayReader::new(&arrays, &sources, first, last)?;
+        draw.base = reader.base;
+        for (copy, array) in draw.arrays.iter_mut().zip(reader.arrays) {
+            *copy = array.map(|(array, bytes)| {
+                let len = array.span_len(reader.base, last).unwrap_or(0);
+                (*array, bytes[..len].to_vec())
+            });
+        }
+        Ok(draw)
+    }
+
+    /// Executes a draw compiled into a list: the vertices an immediate draw of the same
+    /// elements makes, through the same path.
+    pub(crate) fn draw_recorded(&mut self, draw: &RecordedDraw) -> GlResult {
+        let indices = draw.indices.borrow();
+        check_draw(self, draw.mode, &indices)?;
+        // No copied vertex array: the vertex array was disabled, nothing is drawn.
+        if draw.arrays[ArrayKind::Vertex as usize].is_none()
+            || !self.vertices_observed()
+            || indices.is_empty()
+        {
+            return Ok(());
+        }
+        let arrays = std::array::from_fn(|k| {
+            draw.arrays[k]
+                .as_ref()
+                .map(|(array, bytes)| (array, &bytes[..]))
+        });
+        let fetch = ArrayFetch::new(draw.base, arrays);
+        self.draw_arrays_with(draw.mode, &fetch, &indices);
         Ok(())
     }
 

@@ -3,7 +3,7 @@
 use glam::{DMat4, DVec3, Mat4};
 
 use crate::context::Context;
-use crate::error::GlResult;
+use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use crate::state::matrix::{frustum, ortho, rotation};
 
@@ -28,6 +28,23 @@ impl Context {
     /// glLoadIdentity.
     pub fn load_identity(&mut self) -> GlResult {
         self.update_matrix(|top| *top = Mat4::IDENTITY)
+    }
+
+    /// Runs a matrix command on the 16 values of glLoadMatrix, glMultMatrix and their
+    /// transpose forms, doubles narrowed to floats as GL keeps matrices. Between glBegin and
+    /// glEnd the command itself is the error, values or not (§2.6.3); no values (NULL) is
+    /// GL_INVALID_VALUE.
+    pub fn matrix_values<T: Copy + Into<f64>>(
+        &mut self,
+        m: &[T],
+        command: fn(&mut Context, &[f32; 16]) -> GlResult,
+    ) -> GlResult {
+        self.outside_begin_end()?;
+        if m.len() < 16 {
+            return Err(GlError::InvalidValue);
+        }
+        let matrix: [f32; 16] = std::array::from_fn(|i| m[i].into() as f32);
+        command(self, &matrix)
     }
 
     /// glLoadMatrixf: `m` in GL's column-major order.

@@ -6,6 +6,7 @@ pub mod capture;
 pub mod feedback;
 pub mod fragment;
 pub mod lighting;
+pub mod list;
 pub mod matrix;
 pub mod pixel;
 pub mod query;

@@ -2,6 +2,7 @@
 
 use std::ffi::CStr;
 
+use crate::commands::list::MAX_LIST_NESTING;
 use crate::context::{Context, RenderMode};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
@@ -138,6 +139,10 @@ impl Context {
             GL_SELECTION_BUFFER_SIZE => int(self.selection.capacity as i32),
             GL_NAME_STACK_DEPTH => int(self.selection.names.len() as i32),
             GL_MAX_NAME_STACK_DEPTH => int(MAX_NAME_STACK_DEPTH as i32),
+            GL_LIST_BASE => int(self.lists.base as i32),
+            GL_LIST_INDEX => int(self.lists.index() as i32),
+            GL_LIST_MODE => enumeration(self.lists.mode()),
+            GL_MAX_LIST_NESTING => int(MAX_LIST_NESTING as i32),
             GL_FEEDBACK_BUFFER_SIZE => int(self.feedback.capacity as i32),
             GL_FEEDBACK_BUFFER_TYPE => {
                 enumeration(self.feedback.layout.map_or(GL_2D, |layout| layout.kind))
