@@ -919,6 +919,8 @@ c_programs!(
     state_points_lines_polygons,
     state_pixels,
     osmesa_diff_buffers_and_factors,
+    texture_objects_params,
+    texture_osmesa_diff_unbound_names,
 );
 
 /// The line-reset rule accepts exactly fflight `line_reset` vs OSMesa `line`

@@ -8,6 +8,8 @@ use crate::gl::*;
 use crate::state::fog::fog_param_count;
 use crate::state::pixel::{StoreParam, pixel_map_read_count};
 use crate::state::rasterization::point_param_count;
+use crate::commands::texture::SubImageArgs;
+use crate::state::texture::{tex_env_count, tex_parameter_count};
 
 #[unsafe(no_mangle)]
 pub extern "C" fn glPointSize(size: GLfloat) {
@@ -471,5 +473,257 @@ pub extern "C" fn glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) {
 pub extern "C" fn glReadBuffer(mode: GLenum) {
     with_context(|ctx| {
         ctx.read_buffer(mode)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glActiveTexture(texture: GLenum) {
+    with_context(|ctx| {
+        ctx.active_texture(texture)
+    })
+}
+
+/// # Safety
+/// `textures` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGenTextures(n: GLsizei, textures: *mut GLuint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let textures = unsafe { read_mut(textures, n.max(0) as usize) };
+        ctx.gen_textures(n, textures)
+    })
+}
+
+/// # Safety
+/// `textures` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let textures = unsafe { read(textures, n.max(0) as usize) };
+        ctx.delete_textures(n, textures)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glIsTexture(texture: GLuint) -> GLboolean {
+    with_context(|ctx| {
+        ctx.is_texture(texture)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glBindTexture(target: GLenum, texture: GLuint) {
+    with_context(|ctx| {
+        ctx.bind_texture(target, texture)
+    })
+}
+
+/// Every texture is resident: GL_TRUE, and `residences` is left as it is.
+///
+/// # Safety
+/// `textures` is NULL or points to the values the command reads.
+/// `residences` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glAreTexturesResident(n: GLsizei, textures: *const GLuint, residences: *mut GLboolean) -> GLboolean {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let textures = unsafe { read(textures, n.max(0) as usize) };
+        // SAFETY: the caller's guarantee, forwarded.
+        let residences = unsafe { read_mut(residences, n.max(0) as usize) };
+        ctx.are_textures_resident(n, textures, residences)
+    })
+}
+
+/// # Safety
+/// `textures` is NULL or points to the values the command reads.
+/// `priorities` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glPrioritizeTextures(n: GLsizei, textures: *const GLuint, priorities: *const GLclampf) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let textures = unsafe { read(textures, n.max(0) as usize) };
+        // SAFETY: the caller's guarantee, forwarded.
+        let priorities = unsafe { read(priorities, n.max(0) as usize) };
+        ctx.prioritize_textures(n, textures, priorities)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) {
+    with_context(|ctx| {
+        ctx.tex_parameter_scalar(target, pname, param)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
+    with_context(|ctx| {
+        ctx.tex_parameter_scalar(target, pname, param as f32)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, tex_parameter_count(pname).unwrap_or(0)) };
+        ctx.tex_parameter(target, pname, params)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, tex_parameter_count(pname).unwrap_or(0)) };
+        ctx.tex_parameter_i(target, pname, params)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_parameter(target, pname)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_parameter_i(target, pname)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) {
+    with_context(|ctx| {
+        ctx.tex_env_scalar(target, pname, param)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
+    with_context(|ctx| {
+        ctx.tex_env_scalar(target, pname, param as f32)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, tex_env_count(target, pname).unwrap_or(0)) };
+        ctx.tex_env(target, pname, params)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, tex_env_count(target, pname).unwrap_or(0)) };
+        ctx.tex_env_i(target, pname, params)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_env(target, pname)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_env_i(target, pname)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_level_parameter(target, level, pname)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_level_parameter(target, level, pname).map(|v| v.into_iter().map(|i| i as f32).collect::<Vec<_>>())?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// fflight's framebuffer holds nothing drawn: the texels copied are (0, 0, 0, 0) after pixel
+/// transfer, wherever the rectangle lies.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyTexImage1D(target: GLenum, level: GLint, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei, border: GLint) {
+    with_context(|ctx| {
+        ctx.copy_tex_image(1, target, level, internalformat as GLint, [width, 1], border)
+    })
+}
+
+/// Copies the empty framebuffer: see glCopyTexImage1D.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyTexImage2D(target: GLenum, level: GLint, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei, border: GLint) {
+    with_context(|ctx| {
+        ctx.copy_tex_image(2, target, level, internalformat as GLint, [width, height], border)
+    })
+}
+
+/// Copies the empty framebuffer: see glCopyTexImage1D.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, _x: GLint, _y: GLint, width: GLsizei) {
+    with_context(|ctx| {
+        ctx.copy_tex_sub_image(1, &SubImageArgs { target, level, offset: [xoffset, 0, 0], size: [width, 1, 1], format: 0, ty: 0 })
+    })
+}
+
+/// Copies the empty framebuffer: see glCopyTexImage1D.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei) {
+    with_context(|ctx| {
+        ctx.copy_tex_sub_image(2, &SubImageArgs { target, level, offset: [xoffset, yoffset, 0], size: [width, height, 1], format: 0, ty: 0 })
+    })
+}
+
+/// Copies the empty framebuffer: see glCopyTexImage1D.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei) {
+    with_context(|ctx| {
+        ctx.copy_tex_sub_image(3, &SubImageArgs { target, level, offset: [xoffset, yoffset, zoffset], size: [width, height, 1], format: 0, ty: 0 })
     })
 }

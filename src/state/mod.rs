@@ -14,3 +14,5 @@ pub mod matrix;
 pub mod pixel;
 pub mod raster;
 pub mod rasterization;
+pub mod texture;
+pub mod texture_image;
