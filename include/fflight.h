@@ -40,6 +40,11 @@ typedef ptrdiff_t GLintptr;
 typedef struct FflContext FflContext;
 
 /*
+ The four texture targets of GL 1.5, in the order of `TextureUnit::bindings`.
+ */
+typedef struct Target Target;
+
+/*
  One captured vertex: positions in eye and clip coordinates, the lit colors of both faces
  (without two-sided lighting the back colors equal the front ones), the texture
  coordinate after the texture matrix, and the edge flag it was given.
@@ -1978,6 +1983,696 @@ typedef struct FflCapturedPrimitive {
 #define GL_INDEX_ARRAY_BUFFER_BINDING 34969
 #endif
 
+#ifndef GL_TEXTURE_BINDING_1D
+#define GL_TEXTURE_BINDING_1D 32872
+#endif
+
+#ifndef GL_TEXTURE_BINDING_2D
+#define GL_TEXTURE_BINDING_2D 32873
+#endif
+
+#ifndef GL_TEXTURE_BINDING_3D
+#define GL_TEXTURE_BINDING_3D 32874
+#endif
+
+#ifndef GL_TEXTURE_BINDING_CUBE_MAP
+#define GL_TEXTURE_BINDING_CUBE_MAP 34068
+#endif
+
+#ifndef GL_PROXY_TEXTURE_1D
+#define GL_PROXY_TEXTURE_1D 32867
+#endif
+
+#ifndef GL_PROXY_TEXTURE_2D
+#define GL_PROXY_TEXTURE_2D 32868
+#endif
+
+#ifndef GL_PROXY_TEXTURE_3D
+#define GL_PROXY_TEXTURE_3D 32880
+#endif
+
+#ifndef GL_PROXY_TEXTURE_CUBE_MAP
+#define GL_PROXY_TEXTURE_CUBE_MAP 34075
+#endif
+
+#ifndef GL_TEXTURE_CUBE_MAP_POSITIVE_X
+#define GL_TEXTURE_CUBE_MAP_POSITIVE_X 34069
+#endif
+
+#ifndef GL_TEXTURE_CUBE_MAP_NEGATIVE_X
+#define GL_TEXTURE_CUBE_MAP_NEGATIVE_X 34070
+#endif
+
+#ifndef GL_TEXTURE_CUBE_MAP_POSITIVE_Y
+#define GL_TEXTURE_CUBE_MAP_POSITIVE_Y 34071
+#endif
+
+#ifndef GL_TEXTURE_CUBE_MAP_NEGATIVE_Y
+#define GL_TEXTURE_CUBE_MAP_NEGATIVE_Y 34072
+#endif
+
+#ifndef GL_TEXTURE_CUBE_MAP_POSITIVE_Z
+#define GL_TEXTURE_CUBE_MAP_POSITIVE_Z 34073
+#endif
+
+#ifndef GL_TEXTURE_CUBE_MAP_NEGATIVE_Z
+#define GL_TEXTURE_CUBE_MAP_NEGATIVE_Z 34074
+#endif
+
+#ifndef GL_MAX_TEXTURE_SIZE
+#define GL_MAX_TEXTURE_SIZE 3379
+#endif
+
+#ifndef GL_MAX_3D_TEXTURE_SIZE
+#define GL_MAX_3D_TEXTURE_SIZE 32883
+#endif
+
+#ifndef GL_MAX_CUBE_MAP_TEXTURE_SIZE
+#define GL_MAX_CUBE_MAP_TEXTURE_SIZE 34076
+#endif
+
+#ifndef GL_MAX_TEXTURE_UNITS
+#define GL_MAX_TEXTURE_UNITS 34018
+#endif
+
+#ifndef GL_ACTIVE_TEXTURE
+#define GL_ACTIVE_TEXTURE 34016
+#endif
+
+#ifndef GL_TEXTURE0
+#define GL_TEXTURE0 33984
+#endif
+
+#ifndef GL_TEXTURE1
+#define GL_TEXTURE1 33985
+#endif
+
+#ifndef GL_TEXTURE2
+#define GL_TEXTURE2 33986
+#endif
+
+#ifndef GL_TEXTURE3
+#define GL_TEXTURE3 33987
+#endif
+
+#ifndef GL_TEXTURE4
+#define GL_TEXTURE4 33988
+#endif
+
+#ifndef GL_TEXTURE5
+#define GL_TEXTURE5 33989
+#endif
+
+#ifndef GL_TEXTURE6
+#define GL_TEXTURE6 33990
+#endif
+
+#ifndef GL_TEXTURE7
+#define GL_TEXTURE7 33991
+#endif
+
+#ifndef GL_TEXTURE31
+#define GL_TEXTURE31 34015
+#endif
+
+#ifndef GL_MAX_TEXTURE_LOD_BIAS
+#define GL_MAX_TEXTURE_LOD_BIAS 34045
+#endif
+
+#ifndef GL_NUM_COMPRESSED_TEXTURE_FORMATS
+#define GL_NUM_COMPRESSED_TEXTURE_FORMATS 34466
+#endif
+
+#ifndef GL_COMPRESSED_TEXTURE_FORMATS
+#define GL_COMPRESSED_TEXTURE_FORMATS 34467
+#endif
+
+#ifndef GL_TEXTURE_MAG_FILTER
+#define GL_TEXTURE_MAG_FILTER 10240
+#endif
+
+#ifndef GL_TEXTURE_MIN_FILTER
+#define GL_TEXTURE_MIN_FILTER 10241
+#endif
+
+#ifndef GL_TEXTURE_WRAP_S
+#define GL_TEXTURE_WRAP_S 10242
+#endif
+
+#ifndef GL_TEXTURE_WRAP_T
+#define GL_TEXTURE_WRAP_T 10243
+#endif
+
+#ifndef GL_TEXTURE_WRAP_R
+#define GL_TEXTURE_WRAP_R 32882
+#endif
+
+#ifndef GL_TEXTURE_BORDER_COLOR
+#define GL_TEXTURE_BORDER_COLOR 4100
+#endif
+
+#ifndef GL_TEXTURE_PRIORITY
+#define GL_TEXTURE_PRIORITY 32870
+#endif
+
+#ifndef GL_TEXTURE_RESIDENT
+#define GL_TEXTURE_RESIDENT 32871
+#endif
+
+#ifndef GL_TEXTURE_MIN_LOD
+#define GL_TEXTURE_MIN_LOD 33082
+#endif
+
+#ifndef GL_TEXTURE_MAX_LOD
+#define GL_TEXTURE_MAX_LOD 33083
+#endif
+
+#ifndef GL_TEXTURE_BASE_LEVEL
+#define GL_TEXTURE_BASE_LEVEL 33084
+#endif
+
+#ifndef GL_TEXTURE_MAX_LEVEL
+#define GL_TEXTURE_MAX_LEVEL 33085
+#endif
+
+#ifndef GL_GENERATE_MIPMAP
+#define GL_GENERATE_MIPMAP 33169
+#endif
+
+#ifndef GL_DEPTH_TEXTURE_MODE
+#define GL_DEPTH_TEXTURE_MODE 34891
+#endif
+
+#ifndef GL_TEXTURE_COMPARE_MODE
+#define GL_TEXTURE_COMPARE_MODE 34892
+#endif
+
+#ifndef GL_TEXTURE_COMPARE_FUNC
+#define GL_TEXTURE_COMPARE_FUNC 34893
+#endif
+
+#ifndef GL_COMPARE_R_TO_TEXTURE
+#define GL_COMPARE_R_TO_TEXTURE 34894
+#endif
+
+#ifndef GL_NEAREST
+#define GL_NEAREST 9728
+#endif
+
+#ifndef GL_NEAREST_MIPMAP_NEAREST
+#define GL_NEAREST_MIPMAP_NEAREST 9984
+#endif
+
+#ifndef GL_LINEAR_MIPMAP_NEAREST
+#define GL_LINEAR_MIPMAP_NEAREST 9985
+#endif
+
+#ifndef GL_NEAREST_MIPMAP_LINEAR
+#define GL_NEAREST_MIPMAP_LINEAR 9986
+#endif
+
+#ifndef GL_LINEAR_MIPMAP_LINEAR
+#define GL_LINEAR_MIPMAP_LINEAR 9987
+#endif
+
+#ifndef GL_CLAMP
+#define GL_CLAMP 10496
+#endif
+
+#ifndef GL_REPEAT
+#define GL_REPEAT 10497
+#endif
+
+#ifndef GL_CLAMP_TO_EDGE
+#define GL_CLAMP_TO_EDGE 33071
+#endif
+
+#ifndef GL_CLAMP_TO_BORDER
+#define GL_CLAMP_TO_BORDER 33069
+#endif
+
+#ifndef GL_MIRRORED_REPEAT
+#define GL_MIRRORED_REPEAT 33648
+#endif
+
+#ifndef GL_TEXTURE_WIDTH
+#define GL_TEXTURE_WIDTH 4096
+#endif
+
+#ifndef GL_TEXTURE_HEIGHT
+#define GL_TEXTURE_HEIGHT 4097
+#endif
+
+#ifndef GL_TEXTURE_DEPTH
+#define GL_TEXTURE_DEPTH 32881
+#endif
+
+#ifndef GL_TEXTURE_BORDER
+#define GL_TEXTURE_BORDER 4101
+#endif
+
+#ifndef GL_TEXTURE_INTERNAL_FORMAT
+#define GL_TEXTURE_INTERNAL_FORMAT 4099
+#endif
+
+#ifndef GL_TEXTURE_COMPONENTS
+#define GL_TEXTURE_COMPONENTS 4099
+#endif
+
+#ifndef GL_TEXTURE_RED_SIZE
+#define GL_TEXTURE_RED_SIZE 32860
+#endif
+
+#ifndef GL_TEXTURE_GREEN_SIZE
+#define GL_TEXTURE_GREEN_SIZE 32861
+#endif
+
+#ifndef GL_TEXTURE_BLUE_SIZE
+#define GL_TEXTURE_BLUE_SIZE 32862
+#endif
+
+#ifndef GL_TEXTURE_ALPHA_SIZE
+#define GL_TEXTURE_ALPHA_SIZE 32863
+#endif
+
+#ifndef GL_TEXTURE_LUMINANCE_SIZE
+#define GL_TEXTURE_LUMINANCE_SIZE 32864
+#endif
+
+#ifndef GL_TEXTURE_INTENSITY_SIZE
+#define GL_TEXTURE_INTENSITY_SIZE 32865
+#endif
+
+#ifndef GL_TEXTURE_DEPTH_SIZE
+#define GL_TEXTURE_DEPTH_SIZE 34890
+#endif
+
+#ifndef GL_TEXTURE_COMPRESSED
+#define GL_TEXTURE_COMPRESSED 34465
+#endif
+
+#ifndef GL_TEXTURE_COMPRESSED_IMAGE_SIZE
+#define GL_TEXTURE_COMPRESSED_IMAGE_SIZE 34464
+#endif
+
+#ifndef GL_TEXTURE_ENV
+#define GL_TEXTURE_ENV 8960
+#endif
+
+#ifndef GL_TEXTURE_ENV_MODE
+#define GL_TEXTURE_ENV_MODE 8704
+#endif
+
+#ifndef GL_TEXTURE_ENV_COLOR
+#define GL_TEXTURE_ENV_COLOR 8705
+#endif
+
+#ifndef GL_TEXTURE_FILTER_CONTROL
+#define GL_TEXTURE_FILTER_CONTROL 34048
+#endif
+
+#ifndef GL_TEXTURE_LOD_BIAS
+#define GL_TEXTURE_LOD_BIAS 34049
+#endif
+
+#ifndef GL_MODULATE
+#define GL_MODULATE 8448
+#endif
+
+#ifndef GL_DECAL
+#define GL_DECAL 8449
+#endif
+
+#ifndef GL_COMBINE
+#define GL_COMBINE 34160
+#endif
+
+#ifndef GL_COMBINE_RGB
+#define GL_COMBINE_RGB 34161
+#endif
+
+#ifndef GL_COMBINE_ALPHA
+#define GL_COMBINE_ALPHA 34162
+#endif
+
+#ifndef GL_SOURCE0_RGB
+#define GL_SOURCE0_RGB 34176
+#endif
+
+#ifndef GL_SOURCE1_RGB
+#define GL_SOURCE1_RGB 34177
+#endif
+
+#ifndef GL_SOURCE2_RGB
+#define GL_SOURCE2_RGB 34178
+#endif
+
+#ifndef GL_SOURCE0_ALPHA
+#define GL_SOURCE0_ALPHA 34184
+#endif
+
+#ifndef GL_SOURCE1_ALPHA
+#define GL_SOURCE1_ALPHA 34185
+#endif
+
+#ifndef GL_SOURCE2_ALPHA
+#define GL_SOURCE2_ALPHA 34186
+#endif
+
+#ifndef GL_OPERAND0_RGB
+#define GL_OPERAND0_RGB 34192
+#endif
+
+#ifndef GL_OPERAND1_RGB
+#define GL_OPERAND1_RGB 34193
+#endif
+
+#ifndef GL_OPERAND2_RGB
+#define GL_OPERAND2_RGB 34194
+#endif
+
+#ifndef GL_OPERAND0_ALPHA
+#define GL_OPERAND0_ALPHA 34200
+#endif
+
+#ifndef GL_OPERAND1_ALPHA
+#define GL_OPERAND1_ALPHA 34201
+#endif
+
+#ifndef GL_OPERAND2_ALPHA
+#define GL_OPERAND2_ALPHA 34202
+#endif
+
+#ifndef GL_RGB_SCALE
+#define GL_RGB_SCALE 34163
+#endif
+
+#ifndef GL_ADD_SIGNED
+#define GL_ADD_SIGNED 34164
+#endif
+
+#ifndef GL_INTERPOLATE
+#define GL_INTERPOLATE 34165
+#endif
+
+#ifndef GL_SUBTRACT
+#define GL_SUBTRACT 34023
+#endif
+
+#ifndef GL_DOT3_RGB
+#define GL_DOT3_RGB 34478
+#endif
+
+#ifndef GL_DOT3_RGBA
+#define GL_DOT3_RGBA 34479
+#endif
+
+#ifndef GL_CONSTANT
+#define GL_CONSTANT 34166
+#endif
+
+#ifndef GL_PRIMARY_COLOR
+#define GL_PRIMARY_COLOR 34167
+#endif
+
+#ifndef GL_PREVIOUS
+#define GL_PREVIOUS 34168
+#endif
+
+#ifndef GL_ALPHA
+#define GL_ALPHA 6406
+#endif
+
+#ifndef GL_LUMINANCE
+#define GL_LUMINANCE 6409
+#endif
+
+#ifndef GL_LUMINANCE_ALPHA
+#define GL_LUMINANCE_ALPHA 6410
+#endif
+
+#ifndef GL_INTENSITY
+#define GL_INTENSITY 32841
+#endif
+
+#ifndef GL_RGB
+#define GL_RGB 6407
+#endif
+
+#ifndef GL_RGBA
+#define GL_RGBA 6408
+#endif
+
+#ifndef GL_DEPTH_COMPONENT
+#define GL_DEPTH_COMPONENT 6402
+#endif
+
+#ifndef GL_RED
+#define GL_RED 6403
+#endif
+
+#ifndef GL_GREEN
+#define GL_GREEN 6404
+#endif
+
+#ifndef GL_BLUE
+#define GL_BLUE 6405
+#endif
+
+#ifndef GL_BGR
+#define GL_BGR 32992
+#endif
+
+#ifndef GL_BGRA
+#define GL_BGRA 32993
+#endif
+
+#ifndef GL_COLOR_INDEX
+#define GL_COLOR_INDEX 6400
+#endif
+
+#ifndef GL_STENCIL_INDEX
+#define GL_STENCIL_INDEX 6401
+#endif
+
+#ifndef GL_ALPHA4
+#define GL_ALPHA4 32827
+#endif
+
+#ifndef GL_ALPHA8
+#define GL_ALPHA8 32828
+#endif
+
+#ifndef GL_ALPHA12
+#define GL_ALPHA12 32829
+#endif
+
+#ifndef GL_ALPHA16
+#define GL_ALPHA16 32830
+#endif
+
+#ifndef GL_LUMINANCE4
+#define GL_LUMINANCE4 32831
+#endif
+
+#ifndef GL_LUMINANCE8
+#define GL_LUMINANCE8 32832
+#endif
+
+#ifndef GL_LUMINANCE12
+#define GL_LUMINANCE12 32833
+#endif
+
+#ifndef GL_LUMINANCE16
+#define GL_LUMINANCE16 32834
+#endif
+
+#ifndef GL_LUMINANCE4_ALPHA4
+#define GL_LUMINANCE4_ALPHA4 32835
+#endif
+
+#ifndef GL_LUMINANCE6_ALPHA2
+#define GL_LUMINANCE6_ALPHA2 32836
+#endif
+
+#ifndef GL_LUMINANCE8_ALPHA8
+#define GL_LUMINANCE8_ALPHA8 32837
+#endif
+
+#ifndef GL_LUMINANCE12_ALPHA4
+#define GL_LUMINANCE12_ALPHA4 32838
+#endif
+
+#ifndef GL_LUMINANCE12_ALPHA12
+#define GL_LUMINANCE12_ALPHA12 32839
+#endif
+
+#ifndef GL_LUMINANCE16_ALPHA16
+#define GL_LUMINANCE16_ALPHA16 32840
+#endif
+
+#ifndef GL_INTENSITY4
+#define GL_INTENSITY4 32842
+#endif
+
+#ifndef GL_INTENSITY8
+#define GL_INTENSITY8 32843
+#endif
+
+#ifndef GL_INTENSITY12
+#define GL_INTENSITY12 32844
+#endif
+
+#ifndef GL_INTENSITY16
+#define GL_INTENSITY16 32845
+#endif
+
+#ifndef GL_R3_G3_B2
+#define GL_R3_G3_B2 10768
+#endif
+
+#ifndef GL_RGB4
+#define GL_RGB4 32847
+#endif
+
+#ifndef GL_RGB5
+#define GL_RGB5 32848
+#endif
+
+#ifndef GL_RGB8
+#define GL_RGB8 32849
+#endif
+
+#ifndef GL_RGB10
+#define GL_RGB10 32850
+#endif
+
+#ifndef GL_RGB12
+#define GL_RGB12 32851
+#endif
+
+#ifndef GL_RGB16
+#define GL_RGB16 32852
+#endif
+
+#ifndef GL_RGBA2
+#define GL_RGBA2 32853
+#endif
+
+#ifndef GL_RGBA4
+#define GL_RGBA4 32854
+#endif
+
+#ifndef GL_RGB5_A1
+#define GL_RGB5_A1 32855
+#endif
+
+#ifndef GL_RGBA8
+#define GL_RGBA8 32856
+#endif
+
+#ifndef GL_RGB10_A2
+#define GL_RGB10_A2 32857
+#endif
+
+#ifndef GL_RGBA12
+#define GL_RGBA12 32858
+#endif
+
+#ifndef GL_RGBA16
+#define GL_RGBA16 32859
+#endif
+
+#ifndef GL_DEPTH_COMPONENT16
+#define GL_DEPTH_COMPONENT16 33189
+#endif
+
+#ifndef GL_DEPTH_COMPONENT24
+#define GL_DEPTH_COMPONENT24 33190
+#endif
+
+#ifndef GL_DEPTH_COMPONENT32
+#define GL_DEPTH_COMPONENT32 33191
+#endif
+
+#ifndef GL_COMPRESSED_ALPHA
+#define GL_COMPRESSED_ALPHA 34025
+#endif
+
+#ifndef GL_COMPRESSED_LUMINANCE
+#define GL_COMPRESSED_LUMINANCE 34026
+#endif
+
+#ifndef GL_COMPRESSED_LUMINANCE_ALPHA
+#define GL_COMPRESSED_LUMINANCE_ALPHA 34027
+#endif
+
+#ifndef GL_COMPRESSED_INTENSITY
+#define GL_COMPRESSED_INTENSITY 34028
+#endif
+
+#ifndef GL_COMPRESSED_RGB
+#define GL_COMPRESSED_RGB 34029
+#endif
+
+#ifndef GL_COMPRESSED_RGBA
+#define GL_COMPRESSED_RGBA 34030
+#endif
+
+#ifndef GL_BITMAP
+#define GL_BITMAP 6656
+#endif
+
+#ifndef GL_UNSIGNED_BYTE_3_3_2
+#define GL_UNSIGNED_BYTE_3_3_2 32818
+#endif
+
+#ifndef GL_UNSIGNED_BYTE_2_3_3_REV
+#define GL_UNSIGNED_BYTE_2_3_3_REV 33634
+#endif
+
+#ifndef GL_UNSIGNED_SHORT_5_6_5
+#define GL_UNSIGNED_SHORT_5_6_5 33635
+#endif
+
+#ifndef GL_UNSIGNED_SHORT_5_6_5_REV
+#define GL_UNSIGNED_SHORT_5_6_5_REV 33636
+#endif
+
+#ifndef GL_UNSIGNED_SHORT_4_4_4_4
+#define GL_UNSIGNED_SHORT_4_4_4_4 32819
+#endif
+
+#ifndef GL_UNSIGNED_SHORT_4_4_4_4_REV
+#define GL_UNSIGNED_SHORT_4_4_4_4_REV 33637
+#endif
+
+#ifndef GL_UNSIGNED_SHORT_5_5_5_1
+#define GL_UNSIGNED_SHORT_5_5_5_1 32820
+#endif
+
+#ifndef GL_UNSIGNED_SHORT_1_5_5_5_REV
+#define GL_UNSIGNED_SHORT_1_5_5_5_REV 33638
+#endif
+
+#ifndef GL_UNSIGNED_INT_8_8_8_8
+#define GL_UNSIGNED_INT_8_8_8_8 32821
+#endif
+
+#ifndef GL_UNSIGNED_INT_8_8_8_8_REV
+#define GL_UNSIGNED_INT_8_8_8_8_REV 33639
+#endif
+
+#ifndef GL_UNSIGNED_INT_10_10_10_2
+#define GL_UNSIGNED_INT_10_10_10_2 32822
+#endif
+
+#ifndef GL_UNSIGNED_INT_2_10_10_10_REV
+#define GL_UNSIGNED_INT_2_10_10_10_REV 33640
+#endif
+
+
+
 
 
 
@@ -3327,6 +4022,167 @@ void glIndexub(GLubyte c);
  */
 void glIndexubv(const GLubyte *c);
 
+void glActiveTexture(GLenum texture);
+
+/*
+ # Safety
+ `textures` is NULL or has room for the values the command writes.
+ */
+void glGenTextures(GLsizei n, GLuint *textures);
+
+/*
+ # Safety
+ `textures` is NULL or points to the values the command reads.
+ */
+void glDeleteTextures(GLsizei n, const GLuint *textures);
+
+GLboolean glIsTexture(GLuint texture);
+
+void glBindTexture(GLenum target, GLuint texture);
+
+/*
+ Every texture is resident: GL_TRUE, and `residences` is left as it is.
+
+ # Safety
+ `textures` is NULL or points to the values the command reads.
+ `residences` is NULL or has room for the values the command writes.
+ */
+GLboolean glAreTexturesResident(GLsizei n, const GLuint *textures, GLboolean *residences);
+
+/*
+ # Safety
+ `textures` is NULL or points to the values the command reads.
+ `priorities` is NULL or points to the values the command reads.
+ */
+void glPrioritizeTextures(GLsizei n, const GLuint *textures, const GLclampf *priorities);
+
+void glTexParameterf(GLenum target, GLenum pname, GLfloat param);
+
+void glTexParameteri(GLenum target, GLenum pname, GLint param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glTexParameterfv(GLenum target, GLenum pname, const GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glTexParameteriv(GLenum target, GLenum pname, const GLint *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetTexParameterfv(GLenum target, GLenum pname, GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetTexParameteriv(GLenum target, GLenum pname, GLint *params);
+
+void glTexEnvf(GLenum target, GLenum pname, GLfloat param);
+
+void glTexEnvi(GLenum target, GLenum pname, GLint param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glTexEnvfv(GLenum target, GLenum pname, const GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glTexEnviv(GLenum target, GLenum pname, const GLint *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetTexEnvfv(GLenum target, GLenum pname, GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetTexEnviv(GLenum target, GLenum pname, GLint *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetTexLevelParameterfv(GLenum target, GLint level, GLenum pname, GLfloat *params);
+
+/*
+ fflight's framebuffer holds nothing drawn: the texels copied are (0, 0, 0, 0) after pixel
+ transfer, wherever the rectangle lies.
+ */
+void glCopyTexImage1D(GLenum target,
+                      GLint level,
+                      GLenum internalformat,
+                      GLint _x,
+                      GLint _y,
+                      GLsizei width,
+                      GLint border);
+
+/*
+ Copies the empty framebuffer: see glCopyTexImage1D.
+ */
+void glCopyTexImage2D(GLenum target,
+                      GLint level,
+                      GLenum internalformat,
+                      GLint _x,
+                      GLint _y,
+                      GLsizei width,
+                      GLsizei height,
+                      GLint border);
+
+/*
+ Copies the empty framebuffer: see glCopyTexImage1D.
+ */
+void glCopyTexSubImage1D(GLenum target,
+                         GLint level,
+                         GLint xoffset,
+                         GLint _x,
+                         GLint _y,
+                         GLsizei width);
+
+/*
+ Copies the empty framebuffer: see glCopyTexImage1D.
+ */
+void glCopyTexSubImage2D(GLenum target,
+                         GLint level,
+                         GLint xoffset,
+                         GLint yoffset,
+                         GLint _x,
+                         GLint _y,
+                         GLsizei width,
+                         GLsizei height);
+
+/*
+ Copies the empty framebuffer: see glCopyTexImage1D.
+ */
+void glCopyTexSubImage3D(GLenum target,
+                         GLint level,
+                         GLint xoffset,
+                         GLint yoffset,
+                         GLint zoffset,
+                         GLint _x,
+                         GLint _y,
+                         GLsizei width,
+                         GLsizei height);
+
 /*
  # Safety
  `params` is NULL or has room for the values `pname` defines.
@@ -3499,6 +4355,179 @@ void glRasterPos4dv(const GLdouble *v);
  `buffer` must have room for `size` unsigned integers until glRenderMode ends selection.
  */
 void glSelectBuffer(GLsizei size, GLuint *buffer);
+
+/*
+ # Safety
+ `pixels` is NULL or points to the bytes the image occupies.
+ */
+void glTexImage1D(GLenum target,
+                  GLint level,
+                  GLint internalformat,
+                  GLsizei width,
+                  GLint border,
+                  GLenum format,
+                  GLenum ty,
+                  const void *pixels);
+
+/*
+ # Safety
+ `pixels` is NULL or points to the bytes the image occupies.
+ */
+void glTexImage2D(GLenum target,
+                  GLint level,
+                  GLint internalformat,
+                  GLsizei width,
+                  GLsizei height,
+                  GLint border,
+                  GLenum format,
+                  GLenum ty,
+                  const void *pixels);
+
+/*
+ # Safety
+ `pixels` is NULL or points to the bytes the image occupies.
+ */
+void glTexImage3D(GLenum target,
+                  GLint level,
+                  GLint internalformat,
+                  GLsizei width,
+                  GLsizei height,
+                  GLsizei depth,
+                  GLint border,
+                  GLenum format,
+                  GLenum ty,
+                  const void *pixels);
+
+/*
+ # Safety
+ `pixels` is NULL or points to the bytes the region occupies.
+ */
+void glTexSubImage1D(GLenum target,
+                     GLint level,
+                     GLint xoffset,
+                     GLsizei width,
+                     GLenum format,
+                     GLenum ty,
+                     const void *pixels);
+
+/*
+ # Safety
+ `pixels` is NULL or points to the bytes the region occupies.
+ */
+void glTexSubImage2D(GLenum target,
+                     GLint level,
+                     GLint xoffset,
+                     GLint yoffset,
+                     GLsizei width,
+                     GLsizei height,
+                     GLenum format,
+                     GLenum ty,
+                     const void *pixels);
+
+/*
+ # Safety
+ `pixels` is NULL or points to the bytes the region occupies.
+ */
+void glTexSubImage3D(GLenum target,
+                     GLint level,
+                     GLint xoffset,
+                     GLint yoffset,
+                     GLint zoffset,
+                     GLsizei width,
+                     GLsizei height,
+                     GLsizei depth,
+                     GLenum format,
+                     GLenum ty,
+                     const void *pixels);
+
+/*
+ Packs the image with the GL_PACK_* modes; bytes between its pixels are left as they are.
+
+ # Safety
+ `pixels` is NULL or has room for the bytes the image occupies under the pack modes.
+ */
+void glGetTexImage(GLenum target, GLint level, GLenum format, GLenum ty, void *pixels);
+
+/*
+ No compressed format is supported: GL_INVALID_ENUM (nothing is read).
+ */
+void glCompressedTexImage1D(GLenum _target,
+                            GLint _level,
+                            GLenum _internalformat,
+                            GLsizei _width,
+                            GLint _border,
+                            GLsizei _image_size,
+                            const void *_data);
+
+/*
+ No compressed format is supported: GL_INVALID_ENUM (nothing is read).
+ */
+void glCompressedTexImage2D(GLenum _target,
+                            GLint _level,
+                            GLenum _internalformat,
+                            GLsizei _width,
+                            GLsizei _height,
+                            GLint _border,
+                            GLsizei _image_size,
+                            const void *_data);
+
+/*
+ No compressed format is supported: GL_INVALID_ENUM (nothing is read).
+ */
+void glCompressedTexImage3D(GLenum _target,
+                            GLint _level,
+                            GLenum _internalformat,
+                            GLsizei _width,
+                            GLsizei _height,
+                            GLsizei _depth,
+                            GLint _border,
+                            GLsizei _image_size,
+                            const void *_data);
+
+/*
+ No compressed format is supported: GL_INVALID_ENUM (nothing is read).
+ */
+void glCompressedTexSubImage1D(GLenum _target,
+                               GLint _level,
+                               GLint _xoffset,
+                               GLsizei _width,
+                               GLenum _format,
+                               GLsizei _image_size,
+                               const void *_data);
+
+/*
+ No compressed format is supported: GL_INVALID_ENUM (nothing is read).
+ */
+void glCompressedTexSubImage2D(GLenum _target,
+                               GLint _level,
+                               GLint _xoffset,
+                               GLint _yoffset,
+                               GLsizei _width,
+                               GLsizei _height,
+                               GLenum _format,
+                               GLsizei _image_size,
+                               const void *_data);
+
+/*
+ No compressed format is supported: GL_INVALID_ENUM (nothing is read).
+ */
+void glCompressedTexSubImage3D(GLenum _target,
+                               GLint _level,
+                               GLint _xoffset,
+                               GLint _yoffset,
+                               GLint _zoffset,
+                               GLsizei _width,
+                               GLsizei _height,
+                               GLsizei _depth,
+                               GLenum _format,
+                               GLsizei _image_size,
+                               const void *_data);
+
+/*
+ No image is compressed: GL_INVALID_OPERATION for a valid target and level (nothing is
+ written).
+ */
+void glGetCompressedTexImage(GLenum target, GLint level, void *_img);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -77,6 +77,8 @@ pub struct Context {
     pub(crate) pixel_store: PixelStoreAttribs,
     /// In no attribute group.
     pub(crate) pixel_maps: PixelMaps,
+    /// Texture units, objects and proxies (GL_TEXTURE_BIT: see docs/architecture.md).
+    pub(crate) textures: crate::state::texture::Textures,
     pub(crate) raster_position: crate::commands::raster_pos::RasterPosition,
     pub(crate) render_mode: RenderMode,
     pub(crate) feedback: FeedbackBuffer,
@@ -131,6 +133,7 @@ impl Context {
             pixel_mode: Default::default(),
             pixel_store: Default::default(),
             pixel_maps: Default::default(),
+            textures: Default::default(),
             raster_position: Default::default(),
             render_mode: RenderMode::Render,
             feedback: FeedbackBuffer::default(),

@@ -932,6 +932,8 @@ c_programs!(
     dlist_call_lists,
     dlist_arrays,
     dlist_errors,
+    texture_objects_params,
+    texture_osmesa_diff_unbound_names,
 );
 
 /// The line-reset rule accepts exactly fflight `line_reset` vs OSMesa `line`

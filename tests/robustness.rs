@@ -499,9 +499,29 @@ const BUFFER_PNAMES: [GLenum; 4] = [
     GL_BUFFER_ACCESS,
     GL_BUFFER_MAPPED,
 ];
+/// The texture pnames of glGet (tables 6.15-6.20, 6.30).
+const TEXTURE_PNAMES: [GLenum; 12] = [
+    GL_TEXTURE_BINDING_1D,
+    GL_TEXTURE_BINDING_2D,
+    GL_TEXTURE_BINDING_3D,
+    GL_TEXTURE_BINDING_CUBE_MAP,
+    GL_ACTIVE_TEXTURE,
+    GL_MAX_TEXTURE_UNITS,
+    GL_MAX_TEXTURE_SIZE,
+    GL_MAX_3D_TEXTURE_SIZE,
+    GL_MAX_CUBE_MAP_TEXTURE_SIZE,
+    GL_MAX_TEXTURE_LOD_BIAS,
+    GL_NUM_COMPRESSED_TEXTURE_FORMATS,
+    GL_COMPRESSED_TEXTURE_FORMATS,
+];
 /// Every glGet pname fflight answers, besides the capabilities.
 fn get_pnames() -> Vec<GLenum> {
-    GET_PNAMES.iter().copied().chain(state_pnames()).collect()
+    GET_PNAMES
+        .iter()
+        .chain(&TEXTURE_PNAMES)
+        .copied()
+        .chain(state_pnames())
+        .collect()
 }
 const MATRIX_MODES: [GLenum; 3] = [GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE];
 const COMPARISON_FUNCS: [GLenum; 8] = [

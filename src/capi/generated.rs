@@ -14,6 +14,8 @@ use crate::state::light::light_param_count;
 use crate::state::light_model::light_model_param_count;
 use crate::state::material::material_param_count;
 use crate::error::GlError;
+use crate::commands::texture::SubImageArgs;
+use crate::state::texture::{tex_env_count, tex_parameter_count};
 
 #[unsafe(no_mangle)]
 pub extern "C" fn glBegin(mode: GLenum) {
@@ -1926,6 +1928,306 @@ pub unsafe extern "C" fn glIndexubv(c: *const GLubyte) {
     })
 }
 
+#[unsafe(no_mangle)]
+pub extern "C" fn glActiveTexture(texture: GLenum) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glActiveTexture { texture }.into()) {
+            return Ok(());
+        }
+        ctx.active_texture(texture)
+    })
+}
+
+/// # Safety
+/// `textures` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGenTextures(n: GLsizei, textures: *mut GLuint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let textures = unsafe { read_mut(textures, n.max(0) as usize) };
+        ctx.gen_textures(n, textures)
+    })
+}
+
+/// # Safety
+/// `textures` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let textures = unsafe { read(textures, n.max(0) as usize) };
+        ctx.delete_textures(n, textures)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glIsTexture(texture: GLuint) -> GLboolean {
+    with_context(|ctx| {
+        ctx.is_texture(texture)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glBindTexture(target: GLenum, texture: GLuint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glBindTexture { target, texture }.into()) {
+            return Ok(());
+        }
+        ctx.bind_texture(target, texture)
+    })
+}
+
+/// Every texture is resident: GL_TRUE, and `residences` is left as it is.
+///
+/// # Safety
+/// `textures` is NULL or points to the values the command reads.
+/// `residences` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glAreTexturesResident(n: GLsizei, textures: *const GLuint, residences: *mut GLboolean) -> GLboolean {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let textures = unsafe { read(textures, n.max(0) as usize) };
+        // SAFETY: the caller's guarantee, forwarded.
+        let residences = unsafe { read_mut(residences, n.max(0) as usize) };
+        ctx.are_textures_resident(n, textures, residences)
+    })
+}
+
+/// # Safety
+/// `textures` is NULL or points to the values the command reads.
+/// `priorities` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glPrioritizeTextures(n: GLsizei, textures: *const GLuint, priorities: *const GLclampf) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let textures = unsafe { read(textures, n.max(0) as usize) };
+        // SAFETY: the caller's guarantee, forwarded.
+        let priorities = unsafe { read(priorities, n.max(0) as usize) };
+        if ctx.record(|| TableCommand::glPrioritizeTextures { n, textures: textures.to_vec(), priorities: priorities.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.prioritize_textures(n, textures, priorities)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glTexParameterf { target, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.tex_parameter_scalar(target, pname, param)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glTexParameteri { target, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.tex_parameter_scalar(target, pname, param as f32)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, tex_parameter_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glTexParameterfv { target, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.tex_parameter(target, pname, params)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, tex_parameter_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glTexParameteriv { target, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.tex_parameter_i(target, pname, params)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_parameter(target, pname)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_parameter_i(target, pname)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glTexEnvf { target, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.tex_env_scalar(target, pname, param)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glTexEnvi { target, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.tex_env_scalar(target, pname, param as f32)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, tex_env_count(target, pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glTexEnvfv { target, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.tex_env(target, pname, params)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, tex_env_count(target, pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glTexEnviv { target, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.tex_env_i(target, pname, params)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_env(target, pname)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_env_i(target, pname)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_level_parameter(target, level, pname)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_level_parameter(target, level, pname).map(|v| v.into_iter().map(|i| i as f32).collect::<Vec<_>>())?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// fflight's framebuffer holds nothing drawn: the texels copied are (0, 0, 0, 0) after pixel
+/// transfer, wherever the rectangle lies.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyTexImage1D(target: GLenum, level: GLint, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei, border: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glCopyTexImage1D { target, level, internalformat, _x, _y, width, border }.into()) {
+            return Ok(());
+        }
+        ctx.copy_tex_image(1, target, level, internalformat as GLint, [width, 1], border)
+    })
+}
+
+/// Copies the empty framebuffer: see glCopyTexImage1D.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyTexImage2D(target: GLenum, level: GLint, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei, border: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glCopyTexImage2D { target, level, internalformat, _x, _y, width, height, border }.into()) {
+            return Ok(());
+        }
+        ctx.copy_tex_image(2, target, level, internalformat as GLint, [width, height], border)
+    })
+}
+
+/// Copies the empty framebuffer: see glCopyTexImage1D.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, _x: GLint, _y: GLint, width: GLsizei) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glCopyTexSubImage1D { target, level, xoffset, _x, _y, width }.into()) {
+            return Ok(());
+        }
+        ctx.copy_tex_sub_image(1, &SubImageArgs { target, level, offset: [xoffset, 0, 0], size: [width, 1, 1], format: 0, ty: 0 })
+    })
+}
+
+/// Copies the empty framebuffer: see glCopyTexImage1D.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glCopyTexSubImage2D { target, level, xoffset, yoffset, _x, _y, width, height }.into()) {
+            return Ok(());
+        }
+        ctx.copy_tex_sub_image(2, &SubImageArgs { target, level, offset: [xoffset, yoffset, 0], size: [width, height, 1], format: 0, ty: 0 })
+    })
+}
+
+/// Copies the empty framebuffer: see glCopyTexImage1D.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glCopyTexSubImage3D { target, level, xoffset, yoffset, zoffset, _x, _y, width, height }.into()) {
+            return Ok(());
+        }
+        ctx.copy_tex_sub_image(3, &SubImageArgs { target, level, offset: [xoffset, yoffset, zoffset], size: [width, height, 1], format: 0, ty: 0 })
+    })
+}
+
 /// A command of the table compiled into a display list: its parameters, and a copy of the
 /// values its pointers gave at compile time.
 #[allow(non_camel_case_types)]
@@ -2083,6 +2385,22 @@ pub enum TableCommand {
     glIndexsv { c: Vec<GLshort> },
     glIndexub { c: GLubyte },
     glIndexubv { c: Vec<GLubyte> },
+    glActiveTexture { texture: GLenum },
+    glBindTexture { target: GLenum, texture: GLuint },
+    glPrioritizeTextures { n: GLsizei, textures: Vec<GLuint>, priorities: Vec<GLclampf> },
+    glTexParameterf { target: GLenum, pname: GLenum, param: GLfloat },
+    glTexParameteri { target: GLenum, pname: GLenum, param: GLint },
+    glTexParameterfv { target: GLenum, pname: GLenum, params: Vec<GLfloat> },
+    glTexParameteriv { target: GLenum, pname: GLenum, params: Vec<GLint> },
+    glTexEnvf { target: GLenum, pname: GLenum, param: GLfloat },
+    glTexEnvi { target: GLenum, pname: GLenum, param: GLint },
+    glTexEnvfv { target: GLenum, pname: GLenum, params: Vec<GLfloat> },
+    glTexEnviv { target: GLenum, pname: GLenum, params: Vec<GLint> },
+    glCopyTexImage1D { target: GLenum, level: GLint, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei, border: GLint },
+    glCopyTexImage2D { target: GLenum, level: GLint, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei, border: GLint },
+    glCopyTexSubImage1D { target: GLenum, level: GLint, xoffset: GLint, _x: GLint, _y: GLint, width: GLsizei },
+    glCopyTexSubImage2D { target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei },
+    glCopyTexSubImage3D { target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei },
 }
 
 impl TableCommand {
@@ -2842,6 +3160,122 @@ impl TableCommand {
             TableCommand::glIndexubv { c } => {
                 let c = &c[..];
                 ctx.index_v(c)
+            }
+            TableCommand::glActiveTexture { texture } => {
+                let texture = *texture;
+                ctx.active_texture(texture)
+            }
+            TableCommand::glBindTexture { target, texture } => {
+                let target = *target;
+                let texture = *texture;
+                ctx.bind_texture(target, texture)
+            }
+            TableCommand::glPrioritizeTextures { n, textures, priorities } => {
+                let n = *n;
+                let textures = &textures[..];
+                let priorities = &priorities[..];
+                ctx.prioritize_textures(n, textures, priorities)
+            }
+            TableCommand::glTexParameterf { target, pname, param } => {
+                let target = *target;
+                let pname = *pname;
+                let param = *param;
+                ctx.tex_parameter_scalar(target, pname, param)
+            }
+            TableCommand::glTexParameteri { target, pname, param } => {
+                let target = *target;
+                let pname = *pname;
+                let param = *param;
+                ctx.tex_parameter_scalar(target, pname, param as f32)
+            }
+            TableCommand::glTexParameterfv { target, pname, params } => {
+                let target = *target;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.tex_parameter(target, pname, params)
+            }
+            TableCommand::glTexParameteriv { target, pname, params } => {
+                let target = *target;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.tex_parameter_i(target, pname, params)
+            }
+            TableCommand::glTexEnvf { target, pname, param } => {
+                let target = *target;
+                let pname = *pname;
+                let param = *param;
+                ctx.tex_env_scalar(target, pname, param)
+            }
+            TableCommand::glTexEnvi { target, pname, param } => {
+                let target = *target;
+                let pname = *pname;
+                let param = *param;
+                ctx.tex_env_scalar(target, pname, param as f32)
+            }
+            TableCommand::glTexEnvfv { target, pname, params } => {
+                let target = *target;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.tex_env(target, pname, params)
+            }
+            TableCommand::glTexEnviv { target, pname, params } => {
+                let target = *target;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.tex_env_i(target, pname, params)
+            }
+            TableCommand::glCopyTexImage1D { target, level, internalformat, _x, _y, width, border } => {
+                let target = *target;
+                let level = *level;
+                let internalformat = *internalformat;
+                let _x = *_x;
+                let _y = *_y;
+                let width = *width;
+                let border = *border;
+                ctx.copy_tex_image(1, target, level, internalformat as GLint, [width, 1], border)
+            }
+            TableCommand::glCopyTexImage2D { target, level, internalformat, _x, _y, width, height, border } => {
+                let target = *target;
+                let level = *level;
+                let internalformat = *internalformat;
+                let _x = *_x;
+                let _y = *_y;
+                let width = *width;
+                let height = *height;
+                let border = *border;
+                ctx.copy_tex_image(2, target, level, internalformat as GLint, [width, height], border)
+            }
+            TableCommand::glCopyTexSubImage1D { target, level, xoffset, _x, _y, width } => {
+                let target = *target;
+                let level = *level;
+                let xoffset = *xoffset;
+                let _x = *_x;
+                let _y = *_y;
+                let width = *width;
+                ctx.copy_tex_sub_image(1, &SubImageArgs { target, level, offset: [xoffset, 0, 0], size: [width, 1, 1], format: 0, ty: 0 })
+            }
+            TableCommand::glCopyTexSubImage2D { target, level, xoffset, yoffset, _x, _y, width, height } => {
+                let target = *target;
+                let level = *level;
+                let xoffset = *xoffset;
+                let yoffset = *yoffset;
+                let _x = *_x;
+                let _y = *_y;
+                let width = *width;
+                let height = *height;
+                ctx.copy_tex_sub_image(2, &SubImageArgs { target, level, offset: [xoffset, yoffset, 0], size: [width, height, 1], format: 0, ty: 0 })
+            }
+            TableCommand::glCopyTexSubImage3D { target, level, xoffset, yoffset, zoffset, _x, _y, width, height } => {
+                let target = *target;
+                let level = *level;
+                let xoffset = *xoffset;
+                let yoffset = *yoffset;
+                let zoffset = *zoffset;
+                let _x = *_x;
+                let _y = *_y;
+                let width = *width;
+                let height = *height;
+                ctx.copy_tex_sub_image(3, &SubImageArgs { target, level, offset: [xoffset, yoffset, zoffset], size: [width, height, 1], format: 0, ty: 0 })
             }
         }
     }

@@ -19,6 +19,7 @@ mod query;
 mod raster;
 mod raster_pos;
 mod select;
+mod texture;
 
 pub use feedback::ApplicationFloats;
 pub use generated::TableCommand;

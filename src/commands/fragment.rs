@@ -43,6 +43,12 @@ macro_rules! group_flag {
             }
             GL_SAMPLE_ALPHA_TO_ONE => Some($($borrow)+ $ctx.multisample.sample_alpha_to_one),
             GL_SAMPLE_COVERAGE => Some($($borrow)+ $ctx.multisample.sample_coverage),
+            // The active texture unit's.
+            GL_TEXTURE_1D | GL_TEXTURE_2D | GL_TEXTURE_3D | GL_TEXTURE_CUBE_MAP => {
+                let unit = $ctx.textures.active_unit;
+                let target = crate::state::texture::Target::of($cap).expect("a texture target");
+                Some($($borrow)+ $ctx.textures.units[unit].enabled[target as usize])
+            }
             _ => None,
         }
     };

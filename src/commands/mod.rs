@@ -14,4 +14,5 @@ pub mod raster;
 pub mod raster_pos;
 pub mod rasterization;
 pub mod select;
+pub mod texture;
 pub mod vertex;

@@ -208,6 +208,7 @@ impl Context {
                     .get_fragment_state(pname)
                     .or_else(|| self.get_rasterization_state(pname))
                     .or_else(|| self.get_pixel_state(pname))
+                    .or_else(|| self.get_texture_state(pname))
                     .ok_or(GlError::InvalidEnum);
             }
         })

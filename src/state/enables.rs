@@ -7,14 +7,11 @@ use crate::gl::*;
 pub const MAX_CLIP_PLANES: usize = 6;
 
 /// GL 1.5 capabilities fflight accepts and reports but whose state it does not implement yet
-/// (evaluators, texturing): glEnable stores them so glIsEnabled answers. The rasterization and
+/// (evaluators, texture coordinate generation): glEnable stores them so glIsEnabled answers.
+/// The texture target enables are per texture unit (`TextureUnit::enabled`). The rasterization and
 /// per-fragment capabilities live in their attribute groups (see `Context::group_flag`).
 const OTHER_CAPABILITIES: &[GLenum] = &[
     GL_AUTO_NORMAL,
-    GL_TEXTURE_1D,
-    GL_TEXTURE_2D,
-    GL_TEXTURE_3D,
-    GL_TEXTURE_CUBE_MAP,
     GL_TEXTURE_GEN_S,
     GL_TEXTURE_GEN_T,
     GL_TEXTURE_GEN_R,

@@ -16,3 +16,5 @@ pub mod pixel;
 pub mod queries;
 pub mod raster;
 pub mod rasterization;
+pub mod texture;
+pub mod texture_image;
