@@ -921,6 +921,7 @@ c_programs!(
     osmesa_diff_buffers_and_factors,
     texture_objects_params,
     texture_osmesa_diff_unbound_names,
+    texture_images,
 );
 
 /// The line-reset rule accepts exactly fflight `line_reset` vs OSMesa `line`
