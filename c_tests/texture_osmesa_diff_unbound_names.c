@@ -11,6 +11,7 @@
  *   Mesa's GL 3.0+ context gives GL_RGBA.
  * - A texture size that is not a power of two (plus the border) is GL_INVALID_VALUE in
  *   GL 1.5 (§3.8.1); Mesa takes it (ARB_texture_non_power_of_two).
+ * - glCopyTexImage2D with internal format 3: GL_INVALID_VALUE (§3.8.2); Mesa: INVALID_ENUM.
  * - glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_ONE) is GL_INVALID_ENUM (table 3.20);
  *   Mesa takes GL_ZERO and GL_ONE (ATI_texture_env_combine3).
  */
@@ -40,6 +41,10 @@ int main(void)
 
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 3, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
     printf("npot_width error_code %d ref error_code %d\n", (int)glGetError(),
+           (int)GL_INVALID_VALUE);
+
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, 3, 0, 0, 2, 2, 0);
+    printf("copy_internal_3 error_code %d ref error_code %d\n", (int)glGetError(),
            (int)GL_INVALID_VALUE);
 
     glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_ONE);

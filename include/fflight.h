@@ -4485,10 +4485,11 @@ void glCompressedTexImage3D(GLenum _target,
                             const void *_data);
 
 /*
- No compressed format is supported: GL_INVALID_ENUM (nothing is read).
+ No image is compressed: GL_INVALID_OPERATION for a valid target and level (nothing is
+ read).
  */
-void glCompressedTexSubImage1D(GLenum _target,
-                               GLint _level,
+void glCompressedTexSubImage1D(GLenum target,
+                               GLint level,
                                GLint _xoffset,
                                GLsizei _width,
                                GLenum _format,
@@ -4496,10 +4497,11 @@ void glCompressedTexSubImage1D(GLenum _target,
                                const void *_data);
 
 /*
- No compressed format is supported: GL_INVALID_ENUM (nothing is read).
+ No image is compressed: GL_INVALID_OPERATION for a valid target and level (nothing is
+ read).
  */
-void glCompressedTexSubImage2D(GLenum _target,
-                               GLint _level,
+void glCompressedTexSubImage2D(GLenum target,
+                               GLint level,
                                GLint _xoffset,
                                GLint _yoffset,
                                GLsizei _width,
@@ -4509,10 +4511,11 @@ void glCompressedTexSubImage2D(GLenum _target,
                                const void *_data);
 
 /*
- No compressed format is supported: GL_INVALID_ENUM (nothing is read).
+ No image is compressed: GL_INVALID_OPERATION for a valid target and level (nothing is
+ read).
  */
-void glCompressedTexSubImage3D(GLenum _target,
-                               GLint _level,
+void glCompressedTexSubImage3D(GLenum target,
+                               GLint level,
                                GLint _xoffset,
                                GLint _yoffset,
                                GLint _zoffset,

@@ -934,6 +934,7 @@ c_programs!(
     dlist_errors,
     texture_objects_params,
     texture_osmesa_diff_unbound_names,
+    texture_images,
 );
 
 /// The line-reset rule accepts exactly fflight `line_reset` vs OSMesa `line`

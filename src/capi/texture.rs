@@ -259,25 +259,27 @@ pub extern "C" fn glCompressedTexImage3D(
     with_context(|ctx| ctx.compressed_tex_image())
 }
 
-/// No compressed format is supported: GL_INVALID_ENUM (nothing is read).
+/// No image is compressed: GL_INVALID_OPERATION for a valid target and level (nothing is
+/// read).
 #[unsafe(no_mangle)]
 pub extern "C" fn glCompressedTexSubImage1D(
-    _target: GLenum,
-    _level: GLint,
+    target: GLenum,
+    level: GLint,
     _xoffset: GLint,
     _width: GLsizei,
     _format: GLenum,
     _image_size: GLsizei,
     _data: *const c_void,
 ) {
-    with_context(|ctx| ctx.compressed_tex_image())
+    with_context(|ctx| ctx.compressed_tex_sub_image(1, target, level))
 }
 
-/// No compressed format is supported: GL_INVALID_ENUM (nothing is read).
+/// No image is compressed: GL_INVALID_OPERATION for a valid target and level (nothing is
+/// read).
 #[unsafe(no_mangle)]
 pub extern "C" fn glCompressedTexSubImage2D(
-    _target: GLenum,
-    _level: GLint,
+    target: GLenum,
+    level: GLint,
     _xoffset: GLint,
     _yoffset: GLint,
     _width: GLsizei,
@@ -286,14 +288,15 @@ pub extern "C" fn glCompressedTexSubImage2D(
     _image_size: GLsizei,
     _data: *const c_void,
 ) {
-    with_context(|ctx| ctx.compressed_tex_image())
+    with_context(|ctx| ctx.compressed_tex_sub_image(2, target, level))
 }
 
-/// No compressed format is supported: GL_INVALID_ENUM (nothing is read).
+/// No image is compressed: GL_INVALID_OPERATION for a valid target and level (nothing is
+/// read).
 #[unsafe(no_mangle)]
 pub extern "C" fn glCompressedTexSubImage3D(
-    _target: GLenum,
-    _level: GLint,
+    target: GLenum,
+    level: GLint,
     _xoffset: GLint,
     _yoffset: GLint,
     _zoffset: GLint,
@@ -304,7 +307,7 @@ pub extern "C" fn glCompressedTexSubImage3D(
     _image_size: GLsizei,
     _data: *const c_void,
 ) {
-    with_context(|ctx| ctx.compressed_tex_image())
+    with_context(|ctx| ctx.compressed_tex_sub_image(3, target, level))
 }
 
 /// No image is compressed: GL_INVALID_OPERATION for a valid target and level (nothing is

@@ -814,12 +814,26 @@ impl Context {
         pack(&colors, pixels, &self.pixel_store.pack, &format, &layout)
     }
 
-    /// glCompressedTexImage1D / 2D / 3D and glCompressedTexSubImage (§3.8.3): fflight
-    /// supports no compressed format (GL_NUM_COMPRESSED_TEXTURE_FORMATS is 0), so every
-    /// internal format (or format) given is GL_INVALID_ENUM, as is a bad target.
+    /// glCompressedTexImage1D / 2D / 3D (§3.8.3): fflight supports no compressed format
+    /// (GL_NUM_COMPRESSED_TEXTURE_FORMATS is 0), so every internal format given is
+    /// GL_INVALID_ENUM, as is a bad target.
     pub fn compressed_tex_image(&mut self) -> GlResult {
         self.outside_begin_end()?;
         Err(GlError::InvalidEnum)
+    }
+
+    /// glCompressedTexSubImage1D / 2D / 3D (§3.8.3): GL_INVALID_ENUM for a bad target,
+    /// GL_INVALID_VALUE for a bad level, else GL_INVALID_OPERATION: no image is compressed,
+    /// so the format never matches the image's.
+    pub fn compressed_tex_sub_image(
+        &mut self,
+        dimensions: usize,
+        target: GLenum,
+        level: GLint,
+    ) -> GlResult {
+        self.outside_begin_end()?;
+        ImageTarget::of(target, dimensions, false)?.check_level(level)?;
+        Err(GlError::InvalidOperation)
     }
 
     /// glGetCompressedTexImage (§6.1.4): GL_INVALID_ENUM for a bad target, GL_INVALID_VALUE

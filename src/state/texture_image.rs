@@ -158,7 +158,7 @@ impl TexImage {
             Base::Alpha => [0.0, 0.0, 0.0, a],
             Base::Luminance => [r, 0.0, 0.0, 1.0],
             Base::LuminanceAlpha => [r, 0.0, 0.0, a],
-            Base::Intensity => [r, 0.0, 0.0, r],
+            Base::Intensity => [r, 0.0, 0.0, 1.0],
             Base::Rgb => [r, g, b, 1.0],
             Base::Rgba => [r, g, b, a],
             Base::Depth => [r, 0.0, 0.0, 0.0],
