@@ -543,14 +543,9 @@ impl Textures {
         Ok(())
     }
 
-    /// glGenTextures: `count` unused names, counting up from the largest name in use (as
-    /// Mesa does).
+    /// glGenTextures.
     pub fn generate(&mut self, count: usize) -> Vec<GLuint> {
-        let largest = self.objects.keys().chain(&self.reserved).max().copied();
-        let first = largest.unwrap_or(0).saturating_add(1);
-        let names: Vec<GLuint> = (first..=GLuint::MAX).take(count).collect();
-        self.reserved.extend(&names);
-        names
+        super::names::generate(self.objects.keys().copied(), &mut self.reserved, count)
     }
 
     /// glIsTexture: whether `name` is an object (a name glGenTextures returned is not one
