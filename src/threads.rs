@@ -29,6 +29,17 @@ pub fn thread_count() -> usize {
     }
 }
 
+/// Below this many vertices per thread, work runs on fewer threads.
+pub const MIN_VERTICES_PER_THREAD: usize = 16 * 1024;
+
+/// How many threads `vertices` vertices of work use: at most the thread count, and no more
+/// than give each `MIN_VERTICES_PER_THREAD`; at least 1.
+pub fn threads_for(vertices: usize) -> usize {
+    thread_count()
+        .min(vertices / MIN_VERTICES_PER_THREAD)
+        .max(1)
+}
+
 /// `FFLIGHT_THREADS` when it holds a positive number, else the number of cores.
 fn default_thread_count() -> usize {
     std::env::var("FFLIGHT_THREADS")

@@ -243,7 +243,7 @@ fn non_finite_inputs_give_clamped_colors() {
 fn bulk_results_do_not_depend_on_the_thread_count() {
     let mut rng = Rng(99);
     let mut ctx = random_state(&mut rng);
-    let count = 3 * fflight::commands::capture::MIN_VERTICES_PER_THREAD + 5;
+    let count = 3 * fflight::threads::MIN_VERTICES_PER_THREAD + 5;
     let vertices: Vec<_> = (0..count).map(|_| random_vertex(&mut rng)).collect();
     let positions: Vec<Vec4> = vertices.iter().map(|v| v.0).collect();
     let normals: Vec<Vec3> = vertices.iter().map(|v| v.1.normal).collect();
@@ -398,7 +398,7 @@ fn draws_do_not_depend_on_the_thread_count() {
     use fflight::state::arrays::ArrayKind;
     let mut rng = Rng(31);
     let base = random_state(&mut rng);
-    let count = 2 * fflight::commands::capture::MIN_VERTICES_PER_THREAD + 1001;
+    let count = 2 * fflight::threads::MIN_VERTICES_PER_THREAD + 1001;
     let floats: Vec<f32> = (0..count * 3).map(|_| rng.uniform(-1.5, 1.5)).collect();
     let bytes: Vec<u8> = floats.iter().flat_map(|f| f.to_ne_bytes()).collect();
     let sources = ArraySources::new(0)

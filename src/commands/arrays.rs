@@ -17,7 +17,6 @@
 use glam::{Vec3, Vec4};
 
 use crate::commands::buffers::with_stores;
-use crate::commands::capture::MIN_VERTICES_PER_THREAD;
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
@@ -26,7 +25,7 @@ use crate::pipeline::block::InputBlock;
 use crate::pipeline::fetch::ArrayFetch;
 use crate::pipeline::parallel::light_in_order;
 use crate::state::arrays::{ARRAY_KINDS, ArrayKind, ByteSpan, ClientArray, VertexArrays};
-use crate::threads::thread_count;
+use crate::threads::threads_for;
 
 /// The size of one index of glDrawElements' `type`; `None` for an invalid type.
 pub fn index_size(index_type: GLenum) -> Option<usize> {
@@ -632,7 +631,7 @@ impl Context {
         let mut input = InputBlock::with_attribs(&self.current);
         let mut stream = self.begin_stream(mode);
         if let ElementIndices::Sequential { first, count } = *indices {
-            let threads = thread_count().min(count / MIN_VERTICES_PER_THREAD);
+            let threads = threads_for(count);
             if threads > 1 {
                 let fill = |block: usize, input: &mut InputBlock| {
                     let start = first + block * LANES;

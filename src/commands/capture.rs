@@ -13,7 +13,7 @@ use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::pipeline::capture::Capture;
 use crate::pipeline::vertex::{CurrentAttribs, ProcessedVertex};
 use crate::state::arrays::read_components;
-use crate::threads::thread_count;
+use crate::threads::threads_for;
 
 /// The layout of one strided array of floats of a bulk call: element i starts `i * stride`
 /// bytes in and has `size` floats.
@@ -155,7 +155,7 @@ impl Context {
             }
         };
         let blocks = count.div_ceil(LANES);
-        let threads = thread_count().min(count / MIN_VERTICES_PER_THREAD).max(1);
+        let threads = threads_for(count);
         if threads == 1 {
             run(0..blocks);
             return Ok(());
@@ -216,9 +216,6 @@ struct OutputSlots<'a>(std::sync::Mutex<&'a mut [ProcessedVertex]>);
 
 /// Blocks a thread processes at a time: inputs and outputs stay in the first-level cache.
 const CHUNK_BLOCKS: usize = 16;
-
-/// Below this many vertices per thread, a call runs on fewer threads.
-pub const MIN_VERTICES_PER_THREAD: usize = 16 * 1024;
 
 /// fflLightVertices' layout, validated: the vertex count, the input arrays (positions of
 /// `position_size` floats, normals of 3, colors of 4) and the six outputs (4 floats each:

@@ -6,7 +6,7 @@ use super::query::{StateValue, enumeration, floats, int, normalized};
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
-use crate::state::convert::int_to_color;
+use crate::state::convert::int_params;
 use crate::state::fog::fog_param_count;
 use crate::state::pixel::{pack_stipple, unpack_stipple};
 use crate::state::rasterization::{MAX_POINT_SIZE, point_param_count, positive_size};
@@ -103,17 +103,7 @@ impl Context {
     /// glFogiv: the color mapped linearly to [-1, 1] (table 2.9) before clamping, other values
     /// converted directly.
     pub fn fog_i(&mut self, pname: GLenum, params: &[GLint]) -> GlResult {
-        let floats: Vec<f32> = params
-            .iter()
-            .map(|&p| {
-                if pname == GL_FOG_COLOR {
-                    int_to_color(p)
-                } else {
-                    p as f32
-                }
-            })
-            .collect();
-        self.fog(pname, &floats)
+        self.fog(pname, &int_params(params, pname == GL_FOG_COLOR))
     }
 
     /// glFogf / glFogi.

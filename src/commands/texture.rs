@@ -8,7 +8,7 @@ use super::query::{StateValue, enumeration, int};
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
-use crate::state::convert::{color_to_int, float_to_int, int_to_color};
+use crate::state::convert::{color_to_int, float_to_int, int_params};
 use crate::state::texture::{
     MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_UNITS, Target, TextureObject, tex_env_count,
     tex_parameter_count,
@@ -205,11 +205,7 @@ impl Context {
     /// glTexParameteriv: the border color maps integers to [-1, 1] (then clamped), the
     /// other values convert directly.
     pub fn tex_parameter_i(&mut self, target: GLenum, pname: GLenum, params: &[GLint]) -> GlResult {
-        let floats: Vec<f32> = if pname == GL_TEXTURE_BORDER_COLOR {
-            params.iter().map(|&i| int_to_color(i)).collect()
-        } else {
-            params.iter().map(|&i| i as f32).collect()
-        };
+        let floats = int_params(params, pname == GL_TEXTURE_BORDER_COLOR);
         self.tex_parameter(target, pname, &floats)
     }
 
@@ -270,11 +266,7 @@ impl Context {
     /// glTexEnviv: the color maps integers to [-1, 1] (then clamped), the others convert
     /// directly.
     pub fn tex_env_i(&mut self, target: GLenum, pname: GLenum, params: &[GLint]) -> GlResult {
-        let floats: Vec<f32> = if pname == GL_TEXTURE_ENV_COLOR {
-            params.iter().map(|&i| int_to_color(i)).collect()
-        } else {
-            params.iter().map(|&i| i as f32).collect()
-        };
+        let floats = int_params(params, pname == GL_TEXTURE_ENV_COLOR);
         self.tex_env(target, pname, &floats)
     }
 

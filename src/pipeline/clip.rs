@@ -19,6 +19,37 @@ const VIEW_VOLUME: [Vec4; 6] = [
     Vec4::new(0.0, 0.0, -1.0, 1.0),
 ];
 
+/// 1 for a plane distance that puts a point outside: negative or NaN.
+fn outside(distance: f32) -> u32 {
+    u32::from(distance < 0.0 || distance.is_nan())
+}
+
+/// One bit per view-volume plane (in `VIEW_VOLUME`'s order) that the clip-space point
+/// `[x, y, z, w]` is outside of, as the planes' dot products decide: each is w ± one
+/// coordinate, plus the other two coordinates times 0, which is NaN (outside) when one of them
+/// is not finite.
+pub fn view_volume_mask([x, y, z, w]: [f32; 4]) -> u32 {
+    let finite = [x.is_finite(), y.is_finite(), z.is_finite()];
+    let others_finite = [
+        finite[1] & finite[2],
+        finite[0] & finite[2],
+        finite[0] & finite[1],
+    ];
+    let mut mask = 0;
+    for (axis, coordinate) in [x, y, z].into_iter().enumerate() {
+        let nan = u32::from(!others_finite[axis]);
+        // Planes 2 * axis (w - coordinate, except z: w + z) and 2 * axis + 1.
+        let (first, second) = if axis == 2 {
+            (w + coordinate, w - coordinate)
+        } else {
+            (w - coordinate, w + coordinate)
+        };
+        mask |= (outside(first) | nan) << (2 * axis);
+        mask |= (outside(second) | nan) << (2 * axis + 1);
+    }
+    mask
+}
+
 /// The planes a vertex is tested against: the view volume and the enabled user planes.
 #[derive(Clone, Debug)]
 pub struct ClipPlanes {
@@ -43,59 +74,26 @@ impl ClipPlanes {
         }
     }
 
-    /// Whether the clip-space point `[x, y, z, w]` is inside the view volume: the six view
-    /// planes of `outside_mask` are 0 for it. (`outside_mask`'s dot products multiply x, y or
-    /// z by 0, which is NaN only for an infinite x, y or z, and then another plane's distance
-    /// is negative or NaN.)
-    #[inline(always)]
-    pub fn in_view_volume([x, y, z, w]: [f32; 4]) -> bool {
-        let distances = [w - x, w + x, w - y, w + y, w + z, w - z];
-        distances
-            .iter()
-            .fold(true, |inside, &d| inside & (d >= 0.0))
-    }
-
     pub fn has_user_planes(&self) -> bool {
         !self.user.is_empty()
     }
 
-    /// Whether a point at `eye` (eye coordinates) is inside every user plane.
-    pub fn user_contain(&self, eye: Vec4) -> bool {
+    /// One bit per user plane (from bit 6) that a point at `eye` (eye coordinates) is outside.
+    pub fn user_mask(&self, eye: Vec4) -> u32 {
         let eye = eye.as_dvec4();
-        self.user.iter().all(|plane| plane.dot(eye) as f32 >= 0.0)
+        self.user.iter().enumerate().fold(0, |mask, (k, equation)| {
+            mask | outside(equation.dot(eye) as f32) << (VIEW_VOLUME.len() + k)
+        })
     }
 
     /// One bit per plane that `v` is outside of: its `distance` is negative or NaN.
     pub fn outside_mask(&self, v: &ProcessedVertex) -> u32 {
-        let outside = |distance: f32| u32::from(distance < 0.0 || distance.is_nan());
-        // The view planes' dot products, term by term: each is w ± one coordinate, plus the
-        // other two coordinates times 0, which is NaN (outside) when one of them is not finite.
-        let [x, y, z, w] = v.clip.to_array();
-        let finite = [x.is_finite(), y.is_finite(), z.is_finite()];
-        let others_finite = [
-            finite[1] & finite[2],
-            finite[0] & finite[2],
-            finite[0] & finite[1],
-        ];
-        let mut mask = 0;
-        for (axis, coordinate) in [x, y, z].into_iter().enumerate() {
-            let nan = u32::from(!others_finite[axis]);
-            // Planes 2 * axis (w - coordinate, except z: w + z) and 2 * axis + 1.
-            let (first, second) = if axis == 2 {
-                (w + coordinate, w - coordinate)
-            } else {
-                (w - coordinate, w + coordinate)
-            };
-            mask |= (outside(first) | nan) << (2 * axis);
-            mask |= (outside(second) | nan) << (2 * axis + 1);
+        let view = view_volume_mask(v.clip.to_array());
+        if self.user.is_empty() {
+            view
+        } else {
+            view | self.user_mask(v.eye)
         }
-        if !self.user.is_empty() {
-            let eye = v.eye.as_dvec4();
-            for (k, equation) in self.user.iter().enumerate() {
-                mask |= outside(equation.dot(eye) as f32) << (VIEW_VOLUME.len() + k);
-            }
-        }
-        mask
     }
 
     fn is_user_plane(plane: usize) -> bool {

@@ -24,7 +24,7 @@ use crate::lighting::batch::process_blocks;
 use crate::lighting::lanes::LANES;
 use assembly::{Assembler, Primitive};
 use block::{InputBlock, OutputBlock, lanes4_get};
-use clip::{ClipPlanes, PolygonVertex, clip_line, clip_triangle, point_visible};
+use clip::{ClipPlanes, PolygonVertex, clip_line, clip_triangle, point_visible, view_volume_mask};
 use feedback::FeedbackVertex;
 use vertex::{DerivedState, ProcessedVertex};
 
@@ -164,14 +164,14 @@ impl Context {
         let mut visible = [false; LANES];
         for lane in 0..LANES {
             let clip = lanes4_get(&block.clip, lane).to_array();
-            visible[lane] = lane < block.len && ClipPlanes::in_view_volume(clip);
+            visible[lane] = lane < block.len && view_volume_mask(clip) == 0;
             for (component, value) in window.iter_mut().zip(map.window(clip)) {
                 component[lane] = value;
             }
         }
         if planes.has_user_planes() {
             for (lane, visible) in visible.iter_mut().enumerate() {
-                *visible = *visible && planes.user_contain(lanes4_get(&block.eye, lane));
+                *visible = *visible && planes.user_mask(lanes4_get(&block.eye, lane)) == 0;
             }
         }
         if self.selecting() {

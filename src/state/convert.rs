@@ -5,6 +5,15 @@ pub fn int_to_color(c: i32) -> f32 {
     ((2.0 * c as f64 + 1.0) / 4_294_967_295.0) as f32
 }
 
+/// The integer parameters of a glFogiv, glTexParameteriv, glTexEnviv ... as floats: colors by
+/// `int_to_color`, other values converted directly.
+pub fn int_params(params: &[i32], is_color: bool) -> Vec<f32> {
+    params
+        .iter()
+        .map(|&p| if is_color { int_to_color(p) } else { p as f32 })
+        .collect()
+}
+
 /// A float color component mapped back to a signed 32-bit integer (§6.1.2), clamped. The
 /// mapping puts 0.0 exactly halfway between -1 and 0; ties round up, so 0.0 reads back as 0.
 pub fn color_to_int(f: f32) -> i32 {
