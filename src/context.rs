@@ -87,6 +87,9 @@ pub struct Context {
     pub(crate) arrays: crate::state::arrays::VertexArrays,
     pub(crate) buffers: crate::state::buffers::BufferObjects,
     pub(crate) capture: crate::pipeline::capture::Capture,
+    /// glPushAttrib's and glPushClientAttrib's stacks (§6.1.14).
+    pub(crate) attrib_stack: Vec<crate::commands::attrib_stack::SavedAttribs>,
+    pub(crate) client_attrib_stack: Vec<crate::commands::attrib_stack::SavedClientAttribs>,
     derived: Option<Arc<DerivedState>>,
     pub(crate) vertex_cache: crate::pipeline::vertex_cache::VertexCache,
 }
@@ -134,6 +137,8 @@ impl Context {
             arrays: Default::default(),
             buffers: Default::default(),
             capture: Default::default(),
+            attrib_stack: Vec::new(),
+            client_attrib_stack: Vec::new(),
             derived: None,
             vertex_cache: Default::default(),
         }

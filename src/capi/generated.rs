@@ -473,3 +473,37 @@ pub extern "C" fn glReadBuffer(mode: GLenum) {
         ctx.read_buffer(mode)
     })
 }
+
+/// Saves the attribute groups `mask` names (GL_ALL_ATTRIB_BITS: all of them) on a stack of
+/// GL_MAX_ATTRIB_STACK_DEPTH (16) entries.
+#[unsafe(no_mangle)]
+pub extern "C" fn glPushAttrib(mask: GLbitfield) {
+    with_context(|ctx| {
+        ctx.push_attrib(mask)
+    })
+}
+
+/// Restores the groups the matching glPushAttrib saved.
+#[unsafe(no_mangle)]
+pub extern "C" fn glPopAttrib() {
+    with_context(|ctx| {
+        ctx.pop_attrib()
+    })
+}
+
+/// Saves the client attribute groups `mask` names (pixel store modes, vertex arrays with
+/// their buffer bindings) on a stack of GL_MAX_CLIENT_ATTRIB_STACK_DEPTH (16) entries.
+#[unsafe(no_mangle)]
+pub extern "C" fn glPushClientAttrib(mask: GLbitfield) {
+    with_context(|ctx| {
+        ctx.push_client_attrib(mask)
+    })
+}
+
+/// Restores the client groups the matching glPushClientAttrib saved.
+#[unsafe(no_mangle)]
+pub extern "C" fn glPopClientAttrib() {
+    with_context(|ctx| {
+        ctx.pop_client_attrib()
+    })
+}
