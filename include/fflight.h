@@ -2671,6 +2671,106 @@ typedef struct FflCapturedPrimitive {
 #define GL_UNSIGNED_INT_2_10_10_10_REV 33640
 #endif
 
+#ifndef GL_CURRENT_BIT
+#define GL_CURRENT_BIT 1
+#endif
+
+#ifndef GL_POINT_BIT
+#define GL_POINT_BIT 2
+#endif
+
+#ifndef GL_LINE_BIT
+#define GL_LINE_BIT 4
+#endif
+
+#ifndef GL_POLYGON_BIT
+#define GL_POLYGON_BIT 8
+#endif
+
+#ifndef GL_POLYGON_STIPPLE_BIT
+#define GL_POLYGON_STIPPLE_BIT 16
+#endif
+
+#ifndef GL_PIXEL_MODE_BIT
+#define GL_PIXEL_MODE_BIT 32
+#endif
+
+#ifndef GL_LIGHTING_BIT
+#define GL_LIGHTING_BIT 64
+#endif
+
+#ifndef GL_FOG_BIT
+#define GL_FOG_BIT 128
+#endif
+
+#ifndef GL_VIEWPORT_BIT
+#define GL_VIEWPORT_BIT 2048
+#endif
+
+#ifndef GL_TRANSFORM_BIT
+#define GL_TRANSFORM_BIT 4096
+#endif
+
+#ifndef GL_ENABLE_BIT
+#define GL_ENABLE_BIT 8192
+#endif
+
+#ifndef GL_HINT_BIT
+#define GL_HINT_BIT 32768
+#endif
+
+#ifndef GL_EVAL_BIT
+#define GL_EVAL_BIT 65536
+#endif
+
+#ifndef GL_LIST_BIT
+#define GL_LIST_BIT 131072
+#endif
+
+#ifndef GL_TEXTURE_BIT
+#define GL_TEXTURE_BIT 262144
+#endif
+
+#ifndef GL_SCISSOR_BIT
+#define GL_SCISSOR_BIT 524288
+#endif
+
+#ifndef GL_MULTISAMPLE_BIT
+#define GL_MULTISAMPLE_BIT 536870912
+#endif
+
+#ifndef GL_ALL_ATTRIB_BITS
+#define GL_ALL_ATTRIB_BITS 4294967295
+#endif
+
+#ifndef GL_CLIENT_PIXEL_STORE_BIT
+#define GL_CLIENT_PIXEL_STORE_BIT 1
+#endif
+
+#ifndef GL_CLIENT_VERTEX_ARRAY_BIT
+#define GL_CLIENT_VERTEX_ARRAY_BIT 2
+#endif
+
+#ifndef GL_CLIENT_ALL_ATTRIB_BITS
+#define GL_CLIENT_ALL_ATTRIB_BITS 4294967295
+#endif
+
+#ifndef GL_ATTRIB_STACK_DEPTH
+#define GL_ATTRIB_STACK_DEPTH 2992
+#endif
+
+#ifndef GL_CLIENT_ATTRIB_STACK_DEPTH
+#define GL_CLIENT_ATTRIB_STACK_DEPTH 2993
+#endif
+
+#ifndef GL_MAX_ATTRIB_STACK_DEPTH
+#define GL_MAX_ATTRIB_STACK_DEPTH 3381
+#endif
+
+#ifndef GL_MAX_CLIENT_ATTRIB_STACK_DEPTH
+#define GL_MAX_CLIENT_ATTRIB_STACK_DEPTH 3387
+#endif
+
 
 
 
@@ -4182,6 +4282,28 @@ void glCopyTexSubImage3D(GLenum target,
                          GLint _y,
                          GLsizei width,
                          GLsizei height);
+
+/*
+ Saves the attribute groups `mask` names (GL_ALL_ATTRIB_BITS: all of them) on a stack of
+ GL_MAX_ATTRIB_STACK_DEPTH (16) entries.
+ */
+void glPushAttrib(GLbitfield mask);
+
+/*
+ Restores the groups the matching glPushAttrib saved.
+ */
+void glPopAttrib(void);
+
+/*
+ Saves the client attribute groups `mask` names (pixel store modes, vertex arrays with
+ their buffer bindings) on a stack of GL_MAX_CLIENT_ATTRIB_STACK_DEPTH (16) entries.
+ */
+void glPushClientAttrib(GLbitfield mask);
+
+/*
+ Restores the client groups the matching glPushClientAttrib saved.
+ */
+void glPopClientAttrib(void);
 
 /*
  # Safety

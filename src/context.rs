@@ -94,6 +94,9 @@ pub struct Context {
     pub(crate) buffers: crate::state::buffers::BufferObjects,
     pub(crate) queries: crate::state::queries::QueryObjects,
     pub(crate) capture: crate::pipeline::capture::Capture,
+    /// glPushAttrib's and glPushClientAttrib's stacks (§6.1.14).
+    pub(crate) attrib_stack: Vec<crate::commands::attrib_stack::SavedAttribs>,
+    pub(crate) client_attrib_stack: Vec<crate::commands::attrib_stack::SavedClientAttribs>,
     derived: Option<Arc<DerivedState>>,
     pub(crate) vertex_cache: crate::pipeline::vertex_cache::VertexCache,
     pub(crate) lists: crate::commands::list::DisplayLists,
@@ -145,6 +148,8 @@ impl Context {
             buffers: Default::default(),
             queries: Default::default(),
             capture: Default::default(),
+            attrib_stack: Vec::new(),
+            client_attrib_stack: Vec::new(),
             derived: None,
             vertex_cache: Default::default(),
             lists: Default::default(),

@@ -868,6 +868,8 @@ c_programs!(
     osmesa_diff_flat_feedback,
     osmesa_diff_edge_flags,
     osmesa_diff_scalar_pnames,
+    attrib_stack,
+    osmesa_diff_attrib_stack,
     osmesa_diff_back_color_material,
     osmesa_diff_texture_matrix,
     raster_pos,

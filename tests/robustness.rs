@@ -14,7 +14,8 @@
 //!   mode), and hit records must be well formed (n, min z <= max z, n names of a stack the
 //!   selection had; -1 exactly when the buffer overflowed). Fed-back, captured and bulk-lit
 //!   colors stay in [0, 1] whatever the inputs (NaN and infinities included), and feedback
-//!   streams parse.
+//!   streams parse. glPushAttrib, glPopAttrib and their client forms run with any mask, to
+//!   overflow and underflow (the stack depths are among the queries).
 //! - Through the C entry points: NULL pointers and wrong enums (glSelectBuffer with NULL or a
 //!   negative size, name-stack errors; NULL for glFog*v, glPointParameter*v, glPolygonStipple,
 //!   glPixelMap* and glGetPixelMap*, negative sizes for glScissor and glPixelMap, wrong enums
@@ -383,11 +384,15 @@ const CAPS: [GLenum; 61] = [
 const VALID_CAPS: usize = 58;
 /// The glGet pnames of vertex processing, the older rasterization state and the buffer
 /// bindings; `get_pnames` adds those of tests/common/state_lists.rs.
-const GET_PNAMES: [GLenum; 95] = [
+const GET_PNAMES: [GLenum; 99] = [
     GL_INDEX_ARRAY_TYPE,
     GL_INDEX_ARRAY_STRIDE,
     GL_INDEX_ARRAY_BUFFER_BINDING,
     GL_CURRENT_INDEX,
+    GL_MAX_ATTRIB_STACK_DEPTH,
+    GL_MAX_CLIENT_ATTRIB_STACK_DEPTH,
+    GL_ATTRIB_STACK_DEPTH,
+    GL_CLIENT_ATTRIB_STACK_DEPTH,
     GL_MAX_LIGHTS,
     GL_MAX_CLIP_PLANES,
     GL_MAX_VIEWPORT_DIMS,
@@ -921,6 +926,10 @@ enum Op {
     Ortho([f64; 6]),
     PushMatrix,
     PopMatrix,
+    PushAttrib(GLbitfield),
+    PopAttrib,
+    PushClientAttrib(GLbitfield),
+    PopClientAttrib,
     Begin(GLenum),
     Vertex(Vec4),
     End,
@@ -1470,8 +1479,9 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
         28 => Op::Rotate(std::array::from_fn(|_| rng.double(f))),
         29 => Op::Frustum(std::array::from_fn(|_| rng.double(f))),
         30 => Op::Ortho(std::array::from_fn(|_| rng.double(f))),
-        31 => Op::PushMatrix,
-        32 => Op::PopMatrix,
+        31 if rng.coin() => Op::PushMatrix,
+        32 if rng.coin() => Op::PopMatrix,
+        31 | 32 => attrib_op(rng),
         33..=37 => Op::Begin(rng.enumeration(&PRIMITIVES)),
         38 => Op::End,
         39 => Op::Rect(std::array::from_fn(|_| rng.float(f))),
@@ -1596,6 +1606,22 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
 }
 
 /// glSelectBuffer: sizes negative, zero, small (overflow likely), large; sometimes NULL.
+/// glPushAttrib, glPopAttrib and their client forms: one bit, every bit, or any mask (bits
+/// naming no group are ignored); the stacks overflow and underflow.
+fn attrib_op(rng: &mut Rng) -> Op {
+    let mask = match rng.below(3) {
+        0 => 1 << rng.below(32),
+        1 => GL_ALL_ATTRIB_BITS,
+        _ => rng.any_u32(),
+    };
+    match rng.below(4) {
+        0 => Op::PushAttrib(mask),
+        1 => Op::PopAttrib,
+        2 => Op::PushClientAttrib(mask),
+        _ => Op::PopClientAttrib,
+    }
+}
+
 fn select_buffer(rng: &mut Rng) -> Op {
     Op::SelectBuffer {
         size: match rng.below(6) {
@@ -1807,6 +1833,10 @@ fn apply(
         Op::Ortho([l, r, b, t, n, f]) => ctx.ortho(*l, *r, *b, *t, *n, *f),
         Op::PushMatrix => ctx.push_matrix(),
         Op::PopMatrix => ctx.pop_matrix(),
+        Op::PushAttrib(mask) => ctx.push_attrib(*mask),
+        Op::PopAttrib => ctx.pop_attrib(),
+        Op::PushClientAttrib(mask) => ctx.push_client_attrib(*mask),
+        Op::PopClientAttrib => ctx.pop_client_attrib(),
         Op::Begin(mode) => ctx.begin(*mode),
         Op::Vertex(v) => {
             ctx.vertex(*v);

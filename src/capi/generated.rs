@@ -2228,6 +2228,46 @@ pub extern "C" fn glCopyTexSubImage3D(target: GLenum, level: GLint, xoffset: GLi
     })
 }
 
+/// Saves the attribute groups `mask` names (GL_ALL_ATTRIB_BITS: all of them) on a stack of
+/// GL_MAX_ATTRIB_STACK_DEPTH (16) entries.
+#[unsafe(no_mangle)]
+pub extern "C" fn glPushAttrib(mask: GLbitfield) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPushAttrib { mask }.into()) {
+            return Ok(());
+        }
+        ctx.push_attrib(mask)
+    })
+}
+
+/// Restores the groups the matching glPushAttrib saved.
+#[unsafe(no_mangle)]
+pub extern "C" fn glPopAttrib() {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPopAttrib {  }.into()) {
+            return Ok(());
+        }
+        ctx.pop_attrib()
+    })
+}
+
+/// Saves the client attribute groups `mask` names (pixel store modes, vertex arrays with
+/// their buffer bindings) on a stack of GL_MAX_CLIENT_ATTRIB_STACK_DEPTH (16) entries.
+#[unsafe(no_mangle)]
+pub extern "C" fn glPushClientAttrib(mask: GLbitfield) {
+    with_context(|ctx| {
+        ctx.push_client_attrib(mask)
+    })
+}
+
+/// Restores the client groups the matching glPushClientAttrib saved.
+#[unsafe(no_mangle)]
+pub extern "C" fn glPopClientAttrib() {
+    with_context(|ctx| {
+        ctx.pop_client_attrib()
+    })
+}
+
 /// A command of the table compiled into a display list: its parameters, and a copy of the
 /// values its pointers gave at compile time.
 #[allow(non_camel_case_types)]
@@ -2401,6 +2441,8 @@ pub enum TableCommand {
     glCopyTexSubImage1D { target: GLenum, level: GLint, xoffset: GLint, _x: GLint, _y: GLint, width: GLsizei },
     glCopyTexSubImage2D { target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei },
     glCopyTexSubImage3D { target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei },
+    glPushAttrib { mask: GLbitfield },
+    glPopAttrib {},
 }
 
 impl TableCommand {
@@ -3276,6 +3318,13 @@ impl TableCommand {
                 let width = *width;
                 let height = *height;
                 ctx.copy_tex_sub_image(3, &SubImageArgs { target, level, offset: [xoffset, yoffset, zoffset], size: [width, height, 1], format: 0, ty: 0 })
+            }
+            TableCommand::glPushAttrib { mask } => {
+                let mask = *mask;
+                ctx.push_attrib(mask)
+            }
+            TableCommand::glPopAttrib {} => {
+                ctx.pop_attrib()
             }
         }
     }

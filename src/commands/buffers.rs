@@ -45,13 +45,8 @@ impl Context {
         self.outside_begin_end()?;
         for &name in names {
             if self.buffers.delete(name) {
-                let arrays = &mut self.arrays;
-                for binding in [&mut arrays.array_buffer, &mut arrays.element_array_buffer] {
-                    if *binding == name {
-                        *binding = 0;
-                    }
-                }
-                arrays.reset_buffer(name);
+                self.arrays.reset_bindings(name);
+                self.forget_saved_buffer(name);
             }
         }
         Ok(())

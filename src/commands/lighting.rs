@@ -219,6 +219,16 @@ impl Context {
             // Client-state arrays, which Mesa accepts here as glEnableClientState.
             return self.client_state(cap, enabled);
         }
+        self.store_capability(cap, enabled)?;
+        if cap == GL_COLOR_MATERIAL {
+            self.apply_color_material();
+        }
+        Ok(())
+    }
+
+    /// Stores a server capability's enable flag, with no other effect (glPopAttrib restores
+    /// flags this way): GL_INVALID_ENUM for a name that is none.
+    pub(crate) fn store_capability(&mut self, cap: GLenum, enabled: bool) -> GlResult {
         if let Some(flag) = self.group_flag_mut(cap) {
             // Rasterization and per-fragment state: nothing derived depends on it.
             *flag = enabled;
@@ -229,10 +239,7 @@ impl Context {
             Capability::Light(i) => self.lights[i].enabled = enabled,
             Capability::Normalize => self.enables.normalize = enabled,
             Capability::RescaleNormal => self.enables.rescale_normal = enabled,
-            Capability::ColorMaterial => {
-                self.color_material.enabled = enabled;
-                self.apply_color_material();
-            }
+            Capability::ColorMaterial => self.color_material.enabled = enabled,
             Capability::CullFace => self.enables.cull_face = enabled,
             Capability::ClipPlane(i) => self.enables.clip_planes[i] = enabled,
             Capability::Other(cap) => self.enables.set_other(cap, enabled),

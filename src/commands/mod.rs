@@ -1,6 +1,7 @@
 //! Every GL command as a method on `Context`, grouped like the specification.
 
 pub mod arrays;
+pub mod attrib_stack;
 pub mod buffers;
 pub mod capture;
 pub mod feedback;

@@ -2,6 +2,7 @@
 
 use std::ffi::CStr;
 
+use crate::commands::attrib_stack::{MAX_ATTRIB_STACK_DEPTH, MAX_CLIENT_ATTRIB_STACK_DEPTH};
 use crate::commands::list::MAX_LIST_NESTING;
 use crate::context::{Context, RenderMode};
 use crate::error::{GlError, GlResult};
@@ -90,6 +91,10 @@ impl Context {
             GL_MAX_MODELVIEW_STACK_DEPTH => int(m.modelview.max_depth() as i32),
             GL_MAX_PROJECTION_STACK_DEPTH => int(m.projection.max_depth() as i32),
             GL_MAX_TEXTURE_STACK_DEPTH => int(m.texture.max_depth() as i32),
+            GL_MAX_ATTRIB_STACK_DEPTH => int(MAX_ATTRIB_STACK_DEPTH as i32),
+            GL_MAX_CLIENT_ATTRIB_STACK_DEPTH => int(MAX_CLIENT_ATTRIB_STACK_DEPTH as i32),
+            GL_ATTRIB_STACK_DEPTH => int(self.attrib_stack_depth() as i32),
+            GL_CLIENT_ATTRIB_STACK_DEPTH => int(self.client_attrib_stack_depth() as i32),
             GL_MAX_ELEMENTS_VERTICES | GL_MAX_ELEMENTS_INDICES => int(MAX_ELEMENTS),
             GL_CURRENT_COLOR => normalized(&self.current.color.to_array()),
             GL_CURRENT_NORMAL => normalized(&self.current.normal.to_array()),

@@ -288,10 +288,14 @@ impl VertexArrays {
         Ok(())
     }
 
-    /// The arrays sourced from buffer object `name` go back to client memory (it was deleted).
-    pub fn reset_buffer(&mut self, name: u32) {
-        for array in self.arrays.iter_mut().filter(|array| array.buffer == name) {
-            array.buffer = 0;
+    /// Every binding to buffer object `name` returns to 0 (it was deleted): GL_ARRAY_BUFFER,
+    /// GL_ELEMENT_ARRAY_BUFFER, and the arrays sourced from it go back to client memory.
+    pub fn reset_bindings(&mut self, name: u32) {
+        let arrays = self.arrays.iter_mut().map(|array| &mut array.buffer);
+        for binding in arrays.chain([&mut self.array_buffer, &mut self.element_array_buffer]) {
+            if *binding == name {
+                *binding = 0;
+            }
         }
     }
 

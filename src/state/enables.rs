@@ -6,12 +6,15 @@ use crate::gl::*;
 /// GL_MAX_CLIP_PLANES.
 pub const MAX_CLIP_PLANES: usize = 6;
 
-/// GL 1.5 capabilities fflight accepts and reports but whose state it does not implement yet
-/// (evaluators, texture coordinate generation): glEnable stores them so glIsEnabled answers.
-/// The texture target enables are per texture unit (`TextureUnit::enabled`). The rasterization and
-/// per-fragment capabilities live in their attribute groups (see `Context::group_flag`).
-const OTHER_CAPABILITIES: &[GLenum] = &[
-    GL_AUTO_NORMAL,
+// GL 1.5 capabilities fflight accepts and reports but whose state it does not implement yet
+// (evaluators, texture coordinate generation): glEnable stores them so glIsEnabled answers. The rasterization and
+// per-fragment capabilities live in their attribute groups (see `Context::group_flag`).
+
+/// The evaluators' capability fflight has (GL_EVAL_BIT's; the maps' enables are not accepted).
+pub const EVAL_CAPABILITIES: &[GLenum] = &[GL_AUTO_NORMAL];
+/// Texture coordinate generation's (GL_TEXTURE_BIT's); the texture target enables are per
+/// texture unit (`TextureUnit::enabled`).
+pub const TEXTURE_CAPABILITIES: &[GLenum] = &[
     GL_TEXTURE_GEN_S,
     GL_TEXTURE_GEN_T,
     GL_TEXTURE_GEN_R,
@@ -26,7 +29,7 @@ pub struct Enables {
     pub rescale_normal: bool,
     pub cull_face: bool,
     pub clip_planes: [bool; MAX_CLIP_PLANES],
-    /// OTHER_CAPABILITIES that are enabled (all start disabled).
+    /// EVAL_CAPABILITIES and TEXTURE_CAPABILITIES that are enabled (all start disabled).
     other: Vec<GLenum>,
 }
 
@@ -55,7 +58,9 @@ impl Capability {
             GL_CLIP_PLANE0..=GL_CLIP_PLANE5 => {
                 Capability::ClipPlane((cap - GL_CLIP_PLANE0) as usize)
             }
-            _ if OTHER_CAPABILITIES.contains(&cap) => Capability::Other(cap),
+            _ if EVAL_CAPABILITIES.contains(&cap) || TEXTURE_CAPABILITIES.contains(&cap) => {
+                Capability::Other(cap)
+            }
             _ => return Err(GlError::InvalidEnum),
         })
     }

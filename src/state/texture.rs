@@ -608,6 +608,70 @@ impl Textures {
     }
 }
 
+/// GL_TEXTURE_BIT's texture state (tables 6.16-6.20): the active unit, each unit's enables,
+/// bindings and environment, and the parameters of every object bound to a unit.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TextureAttribs {
+    active_unit: usize,
+    units: [TextureUnit; MAX_TEXTURE_UNITS],
+    /// Each bound object's name (0: the default object), target and parameters.
+    bound_params: Vec<(GLuint, Target, TextureParams)>,
+}
+
+impl Textures {
+    /// The texture state glPushAttrib(GL_TEXTURE_BIT) saves.
+    pub fn attribs(&self) -> TextureAttribs {
+        let mut bound_params = Vec::new();
+        for unit in &self.units {
+            for target in Target::ALL {
+                let name = unit.bindings[target as usize];
+                let object = self
+                    .objects
+                    .get(&name)
+                    .unwrap_or(&self.defaults[target as usize]);
+                bound_params.push((name, target, object.params.clone()));
+            }
+        }
+        TextureAttribs {
+            active_unit: self.active_unit,
+            units: self.units.clone(),
+            bound_params,
+        }
+    }
+
+    /// glPopAttrib(GL_TEXTURE_BIT): restores `saved`. An object deleted since the push stays
+    /// deleted: its bindings revert to 0 as glDeleteTextures made them (§3.8.12).
+    pub fn restore_attribs(&mut self, saved: TextureAttribs) {
+        self.active_unit = saved.active_unit;
+        self.units = saved.units;
+        for unit in &mut self.units {
+            for binding in &mut unit.bindings {
+                if !self.objects.contains_key(binding) {
+                    *binding = 0;
+                }
+            }
+        }
+        for (name, target, params) in saved.bound_params {
+            if name == 0 {
+                self.defaults[target as usize].params = params;
+            } else if let Some(object) = self.objects.get_mut(&name) {
+                object.params = params;
+            }
+        }
+    }
+
+    /// Every unit's texture target enables (GL_ENABLE_BIT saves all units').
+    pub fn enables(&self) -> [[bool; 4]; MAX_TEXTURE_UNITS] {
+        self.units.each_ref().map(|unit| unit.enabled)
+    }
+
+    pub fn restore_enables(&mut self, enables: [[bool; 4]; MAX_TEXTURE_UNITS]) {
+        for (unit, enabled) in self.units.iter_mut().zip(enables) {
+            unit.enabled = enabled;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
