@@ -374,8 +374,17 @@ fn process<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
 /// A homogeneous eye-space point as a 3D point, lane by lane (`lighting::homogenize`).
 #[inline(always)]
 fn homogenize(eye: [Lanes; 4]) -> Vec3s {
-    // Dividing by 1 changes nothing: only w = 0 must not divide.
+    // Dividing by 1 changes nothing: only w = 0 must not divide. A block of w = 1 (affine
+    // modelviews of 3D vertices: nearly every block) skips the three divisions, the slowest
+    // instructions of the kernel.
     let w = eye[3];
+    if w == Lanes::ONE {
+        return Vec3s {
+            x: eye[0],
+            y: eye[1],
+            z: eye[2],
+        };
+    }
     let divisor = w.nonzero().select_gt(Lanes::ZERO, w, Lanes::ONE);
     Vec3s {
         x: eye[0] / divisor,

@@ -6,7 +6,9 @@
 
 use glam::{DVec4, Vec4};
 
+use super::block::Lanes4;
 use super::vertex::ProcessedVertex;
+use crate::lighting::lanes::LANES;
 use crate::lighting::{FaceColors, LitVertex};
 
 /// The view-volume planes as clip-space plane equations: w - x, w + x, w - y, w + y, w + z, w - z.
@@ -48,6 +50,26 @@ pub fn view_volume_mask([x, y, z, w]: [f32; 4]) -> u32 {
         mask |= (outside(second) | nan) << (2 * axis + 1);
     }
     mask
+}
+
+/// Whether each lane's clip-space point is inside the view volume, `view_volume_mask(..) == 0`
+/// lane by lane: every coordinate finite and every w ± coordinate at least 0 (so not NaN).
+/// Written over whole lanes, with `&` rather than `&&`, so it compiles to vector code.
+pub fn inside_view_volume(clip: &Lanes4) -> [bool; LANES] {
+    let [x, y, z, w] = clip;
+    let mut inside = [false; LANES];
+    for lane in 0..LANES {
+        let (x, y, z, w) = (x[lane], y[lane], z[lane], w[lane]);
+        let finite = x.is_finite() & y.is_finite() & z.is_finite();
+        inside[lane] = finite
+            & (w - x >= 0.0)
+            & (w + x >= 0.0)
+            & (w - y >= 0.0)
+            & (w + y >= 0.0)
+            & (w + z >= 0.0)
+            & (w - z >= 0.0);
+    }
+    inside
 }
 
 /// The planes a vertex is tested against: the view volume and the enabled user planes.

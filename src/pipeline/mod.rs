@@ -24,7 +24,9 @@ use crate::lighting::batch::process_blocks;
 use crate::lighting::lanes::LANES;
 use assembly::{Assembler, Primitive};
 use block::{InputBlock, OutputBlock, lanes4_get};
-use clip::{ClipPlanes, PolygonVertex, clip_line, clip_triangle, point_visible, view_volume_mask};
+use clip::{
+    ClipPlanes, PolygonVertex, clip_line, clip_triangle, inside_view_volume, point_visible,
+};
 use feedback::FeedbackVertex;
 use vertex::{DerivedState, ProcessedVertex};
 
@@ -159,16 +161,9 @@ impl Context {
     /// A block of points (front colors), each culled unless inside every plane: fed back or
     /// selected lane by lane, the same as `feedback_point` for each.
     fn feedback_points(&mut self, planes: &ClipPlanes, block: &OutputBlock) {
-        let map = self.raster.viewport_map();
-        let mut window = [[0.0; LANES]; 4];
-        let mut visible = [false; LANES];
-        for lane in 0..LANES {
-            let clip = lanes4_get(&block.clip, lane).to_array();
-            visible[lane] = lane < block.len && view_volume_mask(clip) == 0;
-            for (component, value) in window.iter_mut().zip(map.window(clip)) {
-                component[lane] = value;
-            }
-        }
+        let window = self.raster.viewport_map().window_lanes(&block.clip);
+        let mut visible = inside_view_volume(&block.clip);
+        visible[block.len..].fill(false);
         if planes.has_user_planes() {
             for (lane, visible) in visible.iter_mut().enumerate() {
                 *visible = *visible && planes.user_mask(lanes4_get(&block.eye, lane)) == 0;

@@ -5,6 +5,8 @@ use glam::{DVec4, Vec4};
 
 use super::enables::MAX_CLIP_PLANES;
 use crate::gl::*;
+use crate::lighting::lanes::LANES;
+use crate::pipeline::block::Lanes4;
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct RasterState {
@@ -73,6 +75,19 @@ pub struct ViewportMap {
 }
 
 impl ViewportMap {
+    /// `window` of every lane of a block of clip-space points.
+    #[inline(always)]
+    pub fn window_lanes(&self, [x, y, z, w]: &Lanes4) -> Lanes4 {
+        let mut out = [[0.0; LANES]; 4];
+        for lane in 0..LANES {
+            let window = self.window([x[lane], y[lane], z[lane], w[lane]]);
+            for (component, value) in out.iter_mut().zip(window) {
+                component[lane] = value;
+            }
+        }
+        out
+    }
+
     /// Window x, y, z and the clip w of the clip-space point `[x, y, z, w]`.
     #[inline(always)]
     pub fn window(&self, [x, y, z, w]: [f32; 4]) -> [f32; 4] {
