@@ -182,16 +182,6 @@ impl Vec3s {
         self.dot(self).sqrt()
     }
 
-    /// Divided by `d` component-wise.
-    #[inline(always)]
-    pub fn divided_by(self, d: Lanes) -> Vec3s {
-        Vec3s {
-            x: self.x / d,
-            y: self.y / d,
-            z: self.z / d,
-        }
-    }
-
     /// The unit vector in this direction, or zero where the length is zero or not finite
     /// (glam's `normalize_or_zero`, lane by lane).
     #[inline(always)]
@@ -199,7 +189,8 @@ impl Vec3s {
         let recip = Lanes::ONE / self.length();
         let usable = lanewise!(i => {
             let r = recip.0[i];
-            select(r > 0.0 && r < f64::INFINITY, r, 0.0)
+            // `&`, not `&&`: no branch per lane.
+            select((r > 0.0) & (r < f64::INFINITY), r, 0.0)
         });
         Vec3s {
             x: usable.select_gt(Lanes::ZERO, self.x * usable, Lanes::ZERO),
