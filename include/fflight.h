@@ -2771,6 +2771,58 @@ typedef struct FflCapturedPrimitive {
 #define GL_MAX_CLIENT_ATTRIB_STACK_DEPTH 3387
 #endif
 
+#ifndef GL_S
+#define GL_S 8192
+#endif
+
+#ifndef GL_T
+#define GL_T 8193
+#endif
+
+#ifndef GL_R
+#define GL_R 8194
+#endif
+
+#ifndef GL_Q
+#define GL_Q 8195
+#endif
+
+#ifndef GL_TEXTURE_GEN_MODE
+#define GL_TEXTURE_GEN_MODE 9472
+#endif
+
+#ifndef GL_OBJECT_PLANE
+#define GL_OBJECT_PLANE 9473
+#endif
+
+#ifndef GL_EYE_PLANE
+#define GL_EYE_PLANE 9474
+#endif
+
+#ifndef GL_EYE_LINEAR
+#define GL_EYE_LINEAR 9216
+#endif
+
+#ifndef GL_OBJECT_LINEAR
+#define GL_OBJECT_LINEAR 9217
+#endif
+
+#ifndef GL_SPHERE_MAP
+#define GL_SPHERE_MAP 9218
+#endif
+
+#ifndef GL_NORMAL_MAP
+#define GL_NORMAL_MAP 34065
+#endif
+
+#ifndef GL_REFLECTION_MAP
+#define GL_REFLECTION_MAP 34066
+#endif
+
+#ifndef GL_CLIENT_ACTIVE_TEXTURE
+#define GL_CLIENT_ACTIVE_TEXTURE 34017
+#endif
+
 
 
 
@@ -4304,6 +4356,181 @@ void glPushClientAttrib(GLbitfield mask);
  Restores the client groups the matching glPushClientAttrib saved.
  */
 void glPopClientAttrib(void);
+
+void glTexGeni(GLenum coord, GLenum pname, GLint param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glTexGeniv(GLenum coord, GLenum pname, const GLint *params);
+
+void glTexGenf(GLenum coord, GLenum pname, GLfloat param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glTexGenfv(GLenum coord, GLenum pname, const GLfloat *params);
+
+void glTexGend(GLenum coord, GLenum pname, GLdouble param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glTexGendv(GLenum coord, GLenum pname, const GLdouble *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetTexGeniv(GLenum coord, GLenum pname, GLint *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetTexGenfv(GLenum coord, GLenum pname, GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetTexGendv(GLenum coord, GLenum pname, GLdouble *params);
+
+/*
+ Selects the texture unit whose texture coordinate array the array commands address.
+ */
+void glClientActiveTexture(GLenum texture);
+
+void glMultiTexCoord1s(GLenum target, GLshort s);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord1sv(GLenum target, const GLshort *v);
+
+void glMultiTexCoord1i(GLenum target, GLint s);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord1iv(GLenum target, const GLint *v);
+
+void glMultiTexCoord1f(GLenum target, GLfloat s);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord1fv(GLenum target, const GLfloat *v);
+
+void glMultiTexCoord1d(GLenum target, GLdouble s);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord1dv(GLenum target, const GLdouble *v);
+
+void glMultiTexCoord2s(GLenum target, GLshort s, GLshort t);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord2sv(GLenum target, const GLshort *v);
+
+void glMultiTexCoord2i(GLenum target, GLint s, GLint t);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord2iv(GLenum target, const GLint *v);
+
+void glMultiTexCoord2f(GLenum target, GLfloat s, GLfloat t);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord2fv(GLenum target, const GLfloat *v);
+
+void glMultiTexCoord2d(GLenum target, GLdouble s, GLdouble t);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord2dv(GLenum target, const GLdouble *v);
+
+void glMultiTexCoord3s(GLenum target, GLshort s, GLshort t, GLshort r);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord3sv(GLenum target, const GLshort *v);
+
+void glMultiTexCoord3i(GLenum target, GLint s, GLint t, GLint r);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord3iv(GLenum target, const GLint *v);
+
+void glMultiTexCoord3f(GLenum target, GLfloat s, GLfloat t, GLfloat r);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord3fv(GLenum target, const GLfloat *v);
+
+void glMultiTexCoord3d(GLenum target, GLdouble s, GLdouble t, GLdouble r);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord3dv(GLenum target, const GLdouble *v);
+
+void glMultiTexCoord4s(GLenum target, GLshort s, GLshort t, GLshort r, GLshort q);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord4sv(GLenum target, const GLshort *v);
+
+void glMultiTexCoord4i(GLenum target, GLint s, GLint t, GLint r, GLint q);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord4iv(GLenum target, const GLint *v);
+
+void glMultiTexCoord4f(GLenum target, GLfloat s, GLfloat t, GLfloat r, GLfloat q);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord4fv(GLenum target, const GLfloat *v);
+
+void glMultiTexCoord4d(GLenum target, GLdouble s, GLdouble t, GLdouble r, GLdouble q);
+
+/*
+ # Safety
+ `v` is NULL or points to the values the command reads.
+ */
+void glMultiTexCoord4dv(GLenum target, const GLdouble *v);
 
 /*
  # Safety

@@ -228,9 +228,10 @@ impl Context {
             transform: VertexTransform::new(
                 *self.matrices.modelview.top(),
                 *self.matrices.projection.top(),
-                *self.matrices.texture.top(),
+                *self.matrices.texture[0].top(),
                 self.enables.normalize,
                 self.enables.rescale_normal,
+                self.textures.units[0].tex_gen.prepared(),
             ),
             lighting: PreparedLighting::new(
                 self.enables.lighting,

@@ -699,3 +699,18 @@ pub const GL_ATTRIB_STACK_DEPTH: GLenum = 0x0BB0;
 pub const GL_CLIENT_ATTRIB_STACK_DEPTH: GLenum = 0x0BB1;
 pub const GL_MAX_ATTRIB_STACK_DEPTH: GLenum = 0x0D35;
 pub const GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: GLenum = 0x0D3B;
+
+// Texture coordinate generation (§2.11.4) and multitexture (§2.7, §2.8).
+pub const GL_S: GLenum = 0x2000;
+pub const GL_T: GLenum = 0x2001;
+pub const GL_R: GLenum = 0x2002;
+pub const GL_Q: GLenum = 0x2003;
+pub const GL_TEXTURE_GEN_MODE: GLenum = 0x2500;
+pub const GL_OBJECT_PLANE: GLenum = 0x2501;
+pub const GL_EYE_PLANE: GLenum = 0x2502;
+pub const GL_EYE_LINEAR: GLenum = 0x2400;
+pub const GL_OBJECT_LINEAR: GLenum = 0x2401;
+pub const GL_SPHERE_MAP: GLenum = 0x2402;
+pub const GL_NORMAL_MAP: GLenum = 0x8511;
+pub const GL_REFLECTION_MAP: GLenum = 0x8512;
+pub const GL_CLIENT_ACTIVE_TEXTURE: GLenum = 0x84E1;

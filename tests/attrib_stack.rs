@@ -54,13 +54,11 @@ fn items() -> Vec<Item> {
         &[
             GL_CURRENT_COLOR,
             GL_CURRENT_NORMAL,
-            GL_CURRENT_TEXTURE_COORDS,
             GL_EDGE_FLAG,
             GL_CURRENT_RASTER_POSITION,
             GL_CURRENT_RASTER_POSITION_VALID,
             GL_CURRENT_RASTER_COLOR,
             GL_CURRENT_RASTER_SECONDARY_COLOR,
-            GL_CURRENT_RASTER_TEXTURE_COORDS,
             GL_CURRENT_RASTER_DISTANCE,
             GL_CURRENT_SECONDARY_COLOR,
             GL_CURRENT_FOG_COORD,
@@ -207,11 +205,7 @@ fn items() -> Vec<Item> {
         server(GL_MULTISAMPLE_BIT | GL_ENABLE_BIT),
     );
     gets(&[GL_AUTO_NORMAL], server(GL_EVAL_BIT | GL_ENABLE_BIT));
-    gets(TEXTURE_CAPABILITIES, server(GL_TEXTURE_BIT | GL_ENABLE_BIT));
-    gets(
-        &[GL_MODELVIEW_MATRIX, GL_PROJECTION_MATRIX, GL_TEXTURE_MATRIX],
-        Bits::None,
-    );
+    gets(&[GL_MODELVIEW_MATRIX, GL_PROJECTION_MATRIX], Bits::None);
     gets(&PIXEL_STORE_PNAMES, Bits::Client(GL_CLIENT_PIXEL_STORE_BIT));
     gets(&ARRAY_PNAMES, Bits::Client(GL_CLIENT_VERTEX_ARRAY_BIT));
     for light in 0..8 {
@@ -243,6 +237,41 @@ fn items() -> Vec<Item> {
         });
     }
     for unit in 0..MAX_TEXTURE_UNITS as GLenum {
+        items.push(texture_unit_item(
+            unit,
+            &[GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_RASTER_TEXTURE_COORDS],
+            server(GL_CURRENT_BIT),
+        ));
+        items.push(texture_unit_item(unit, &[GL_TEXTURE_MATRIX], Bits::None));
+        items.push(texture_unit_item(
+            unit,
+            TEXTURE_CAPABILITIES,
+            server(GL_TEXTURE_BIT | GL_ENABLE_BIT),
+        ));
+        items.push(Item {
+            name: format!("texture unit {unit}: coordinate generation"),
+            bits: server(GL_TEXTURE_BIT),
+            read: Box::new(move |ctx| {
+                let mut probe = ctx.clone();
+                probe.active_texture(GL_TEXTURE0 + unit).unwrap();
+                let mut read = String::new();
+                for coord in [GL_S, GL_T, GL_R, GL_Q] {
+                    for pname in [GL_TEXTURE_GEN_MODE, GL_OBJECT_PLANE, GL_EYE_PLANE] {
+                        read += &format!("{:?}", probe.get_tex_gen(coord, pname));
+                    }
+                }
+                read
+            }),
+        });
+        items.push(Item {
+            name: format!("client texture unit {unit}: texture coordinate array"),
+            bits: Bits::Client(GL_CLIENT_VERTEX_ARRAY_BIT),
+            read: Box::new(move |ctx| {
+                let mut probe = ctx.clone();
+                probe.client_active_texture(GL_TEXTURE0 + unit).unwrap();
+                format!("{:?}", TEX_COORD_ARRAY_PNAMES.map(|p| probe.get(p)))
+            }),
+        });
         items.push(texture_unit_item(
             unit,
             &TEXTURE_TARGETS,
@@ -328,6 +357,14 @@ fn set_texture_parameters(ctx: &mut Context, target: GLenum, k: u32) {
         .unwrap();
 }
 
+const TEX_COORD_ARRAY_PNAMES: [GLenum; 5] = [
+    GL_TEXTURE_COORD_ARRAY,
+    GL_TEXTURE_COORD_ARRAY_SIZE,
+    GL_TEXTURE_COORD_ARRAY_TYPE,
+    GL_TEXTURE_COORD_ARRAY_STRIDE,
+    GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING,
+];
+
 const TEXTURE_TARGETS: [GLenum; 4] = [
     GL_TEXTURE_1D,
     GL_TEXTURE_2D,
@@ -377,7 +414,7 @@ const MATERIAL_PNAMES: [GLenum; 6] = [
     GL_SHININESS,
     GL_COLOR_INDEXES,
 ];
-const ARRAY_PNAMES: [GLenum; 36] = [
+const ARRAY_PNAMES: [GLenum; 31] = [
     GL_SECONDARY_COLOR_ARRAY,
     GL_FOG_COORD_ARRAY,
     GL_SECONDARY_COLOR_ARRAY_TYPE,
@@ -393,7 +430,6 @@ const ARRAY_PNAMES: [GLenum; 36] = [
     GL_NORMAL_ARRAY,
     GL_COLOR_ARRAY,
     GL_INDEX_ARRAY,
-    GL_TEXTURE_COORD_ARRAY,
     GL_EDGE_FLAG_ARRAY,
     GL_VERTEX_ARRAY_SIZE,
     GL_VERTEX_ARRAY_TYPE,
@@ -403,16 +439,12 @@ const ARRAY_PNAMES: [GLenum; 36] = [
     GL_COLOR_ARRAY_SIZE,
     GL_COLOR_ARRAY_TYPE,
     GL_COLOR_ARRAY_STRIDE,
-    GL_TEXTURE_COORD_ARRAY_SIZE,
-    GL_TEXTURE_COORD_ARRAY_TYPE,
-    GL_TEXTURE_COORD_ARRAY_STRIDE,
     GL_EDGE_FLAG_ARRAY_STRIDE,
     GL_ARRAY_BUFFER_BINDING,
     GL_ELEMENT_ARRAY_BUFFER_BINDING,
     GL_VERTEX_ARRAY_BUFFER_BINDING,
     GL_NORMAL_ARRAY_BUFFER_BINDING,
     GL_COLOR_ARRAY_BUFFER_BINDING,
-    GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING,
     GL_EDGE_FLAG_ARRAY_BUFFER_BINDING,
 ];
 
@@ -449,6 +481,20 @@ fn set_everything(ctx: &mut Context, k: u32) {
             }
             ctx.set_capability(target, (unit + t + k as usize).is_multiple_of(2))
                 .unwrap();
+        }
+        let unit_f = unit as f32;
+        ctx.multi_tex_coord(GL_TEXTURE0 + unit as GLenum, v(unit_f))
+            .unwrap();
+        let mode = [GL_OBJECT_LINEAR, GL_EYE_LINEAR][(unit + k as usize) % 2];
+        for (c, coord) in [GL_S, GL_T, GL_R, GL_Q].into_iter().enumerate() {
+            let enable = (unit + c + k as usize).is_multiple_of(2);
+            ctx.set_capability(GL_TEXTURE_GEN_S + c as GLenum, enable)
+                .unwrap();
+            ctx.tex_gen(coord, GL_TEXTURE_GEN_MODE, &[mode as f64])
+                .unwrap();
+            let plane = [f, unit_f, coord as f32, 1.0];
+            ctx.tex_gen(coord, GL_OBJECT_PLANE, &plane).unwrap();
+            ctx.tex_gen(coord, GL_EYE_PLANE, &plane).unwrap();
         }
         ctx.tex_env(
             GL_TEXTURE_ENV,
@@ -591,7 +637,10 @@ fn set_everything(ctx: &mut Context, k: u32) {
     ctx.matrix_mode(GL_PROJECTION).unwrap();
     ctx.scale(1.0 + 0.1 * f as f64, 1.0, 1.0).unwrap();
     ctx.matrix_mode(GL_TEXTURE).unwrap();
-    ctx.scale(f as f64, 1.0, 1.0).unwrap();
+    for unit in 0..MAX_TEXTURE_UNITS as GLenum {
+        ctx.active_texture(GL_TEXTURE0 + unit).unwrap();
+        ctx.scale(f as f64, 1.0 + unit as f64, 1.0).unwrap();
+    }
     ctx.matrix_mode(GL_MODELVIEW).unwrap();
     ctx.rotate(10.0 * f as f64, 0.0, 0.0, 1.0).unwrap();
     ctx.matrix_mode(pick(GL_TEXTURE, GL_PROJECTION)).unwrap();
@@ -638,8 +687,14 @@ fn set_everything(ctx: &mut Context, k: u32) {
     .unwrap();
     ctx.bind_buffer(GL_ARRAY_BUFFER, buffers[k as usize % 2])
         .unwrap();
-    ctx.tex_coord_pointer(1 + k as i32 % 2, pick(GL_SHORT, GL_DOUBLE), stride, address)
-        .unwrap();
+    for unit in (0..MAX_TEXTURE_UNITS as GLenum).rev() {
+        ctx.client_active_texture(GL_TEXTURE0 + unit).unwrap();
+        let stride = stride + 4 * unit as i32;
+        ctx.tex_coord_pointer(1 + k as i32 % 2, pick(GL_SHORT, GL_DOUBLE), stride, address)
+            .unwrap();
+        ctx.client_state(GL_TEXTURE_COORD_ARRAY, (unit + k).is_multiple_of(2))
+            .unwrap();
+    }
     ctx.edge_flag_pointer(stride, address).unwrap();
     ctx.secondary_color_pointer(3, pick(GL_BYTE, GL_FLOAT), stride + 4, address)
         .unwrap();
@@ -651,6 +706,8 @@ fn set_everything(ctx: &mut Context, k: u32) {
         ctx.client_state(array, (i + k as usize).is_multiple_of(2))
             .unwrap();
     }
+    // (The texture coordinate array above was unit 0's.)
+    ctx.client_active_texture(GL_TEXTURE0 + k).unwrap();
     // glGenBuffers counts up: the second setting's names differ from the first's.
 }
 

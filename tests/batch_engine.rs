@@ -146,6 +146,44 @@ fn random_state(rng: &mut Rng) -> Context {
     on(&mut ctx, GL_COLOR_MATERIAL, rng.coin());
     on(&mut ctx, GL_NORMALIZE, rng.coin());
     on(&mut ctx, GL_RESCALE_NORMAL, rng.coin());
+    // Texture coordinate generation on some coordinates, in every mode a coordinate takes.
+    let modes: [&[GLenum]; 4] = [
+        &[
+            GL_OBJECT_LINEAR,
+            GL_EYE_LINEAR,
+            GL_SPHERE_MAP,
+            GL_REFLECTION_MAP,
+            GL_NORMAL_MAP,
+        ],
+        &[
+            GL_OBJECT_LINEAR,
+            GL_EYE_LINEAR,
+            GL_SPHERE_MAP,
+            GL_REFLECTION_MAP,
+            GL_NORMAL_MAP,
+        ],
+        &[
+            GL_OBJECT_LINEAR,
+            GL_EYE_LINEAR,
+            GL_REFLECTION_MAP,
+            GL_NORMAL_MAP,
+        ],
+        &[GL_OBJECT_LINEAR, GL_EYE_LINEAR],
+    ];
+    for (k, coord) in [GL_S, GL_T, GL_R, GL_Q].into_iter().enumerate() {
+        let mode = modes[k][(rng.next() as usize) % modes[k].len()];
+        ctx.tex_gen(coord, GL_TEXTURE_GEN_MODE, &[mode as f32])
+            .unwrap();
+        ctx.tex_gen(coord, GL_OBJECT_PLANE, &rng.vec4(-2.0, 2.0).to_array())
+            .unwrap();
+        ctx.tex_gen(coord, GL_EYE_PLANE, &rng.vec4(-2.0, 2.0).to_array())
+            .unwrap();
+        on(
+            &mut ctx,
+            GL_TEXTURE_GEN_S + k as GLenum,
+            rng.next().is_multiple_of(3),
+        );
+    }
     ctx
 }
 
@@ -168,6 +206,7 @@ fn random_vertex(rng: &mut Rng) -> (Vec4, CurrentAttribs) {
         edge_flag: rng.coin(),
         fog_coord: rng.uniform(-1.0, 1.0),
         index: rng.uniform(0.0, 8.0),
+        ..CurrentAttribs::default()
     };
     (position, attribs)
 }

@@ -872,6 +872,8 @@ c_programs!(
     osmesa_diff_attrib_stack,
     osmesa_diff_back_color_material,
     osmesa_diff_texture_matrix,
+    texgen_osmesa_diff_modes,
+    multitexture_state,
     raster_pos,
     osmesa_diff_raster_pos_lighting,
     system_gl_header,

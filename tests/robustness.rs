@@ -380,11 +380,27 @@ const CAPS: [GLenum; 61] = [
     GL_LIGHT_MODEL_AMBIENT,
     GL_MAX_LIGHTS,
 ];
+const TEXTURE_UNITS: [GLenum; 8] = [
+    GL_TEXTURE0,
+    GL_TEXTURE1,
+    GL_TEXTURE2,
+    GL_TEXTURE3,
+    GL_TEXTURE4,
+    GL_TEXTURE5,
+    GL_TEXTURE6,
+    GL_TEXTURE7,
+];
+const TEX_GEN_COORDS: [GLenum; 4] = [GL_S, GL_T, GL_R, GL_Q];
+const TEX_GEN_PNAMES: [GLenum; 3] = [GL_TEXTURE_GEN_MODE, GL_OBJECT_PLANE, GL_EYE_PLANE];
+/// The modes every coordinate takes (sphere, normal and reflection maps are not q's).
+const TEX_GEN_MODES: [GLenum; 2] = [GL_OBJECT_LINEAR, GL_EYE_LINEAR];
 /// How many of `CAPS` are capabilities.
 const VALID_CAPS: usize = 58;
 /// The glGet pnames of vertex processing, the older rasterization state and the buffer
 /// bindings; `get_pnames` adds those of tests/common/state_lists.rs.
-const GET_PNAMES: [GLenum; 99] = [
+const GET_PNAMES: [GLenum; 101] = [
+    GL_ACTIVE_TEXTURE,
+    GL_CLIENT_ACTIVE_TEXTURE,
     GL_INDEX_ARRAY_TYPE,
     GL_INDEX_ARRAY_STRIDE,
     GL_INDEX_ARRAY_BUFFER_BINDING,
@@ -912,6 +928,17 @@ enum Op {
     Color(Vec4),
     Normal(Vec3),
     TexCoord(Vec4),
+    MultiTexCoord {
+        target: GLenum,
+        coords: Vec4,
+    },
+    TexGen {
+        coord: GLenum,
+        pname: GLenum,
+        params: Vec<f32>,
+    },
+    ActiveTexture(GLenum),
+    ClientActiveTexture(GLenum),
     EdgeFlag(bool),
     MatrixMode(GLenum),
     LoadIdentity,
@@ -1105,6 +1132,7 @@ impl Op {
             Op::Color(_)
                 | Op::Normal(_)
                 | Op::TexCoord(_)
+                | Op::MultiTexCoord { .. }
                 | Op::EdgeFlag(_)
                 | Op::Vertex(_)
                 | Op::Material { .. }
@@ -1114,6 +1142,7 @@ impl Op {
                 | Op::End
                 | Op::Pointer { .. }
                 | Op::ClientState { .. }
+                | Op::ClientActiveTexture(_)
                 | Op::InterleavedArrays { .. }
                 | Op::GetError
         );
@@ -1175,6 +1204,20 @@ impl Op {
             }
             Op::Capability { cap, .. } | Op::IsEnabled(cap) => !valid(cap, &CAPS[..VALID_CAPS]),
             Op::MatrixMode(mode) => !valid(mode, &MATRIX_MODES),
+            Op::MultiTexCoord { target, .. }
+            | Op::ActiveTexture(target)
+            | Op::ClientActiveTexture(target) => !valid(target, &TEXTURE_UNITS),
+            Op::TexGen {
+                coord,
+                pname,
+                ref params,
+            } => {
+                let count = if pname == GL_TEXTURE_GEN_MODE { 1 } else { 4 };
+                !valid(coord, &TEX_GEN_COORDS)
+                    || !valid(pname, &TEX_GEN_PNAMES)
+                    || short(params.len(), count)
+                    || (pname == GL_TEXTURE_GEN_MODE && !valid(params[0] as GLenum, &TEX_GEN_MODES))
+            }
             Op::Begin(mode) => !valid(mode, &PRIMITIVES),
             Op::End => !inside,
             Op::FeedbackBuffer {
@@ -1529,7 +1572,24 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
         } else {
             rng.any_u32()
         }),
-        57 => Op::Finish,
+        57 => match rng.below(5) {
+            0 => Op::Finish,
+            1 => Op::MultiTexCoord {
+                target: rng.enumeration(&TEXTURE_UNITS),
+                coords: rng.vec4(f),
+            },
+            2 => Op::TexGen {
+                coord: rng.enumeration(&TEX_GEN_COORDS),
+                pname: rng.enumeration(&TEX_GEN_PNAMES),
+                params: if rng.coin() {
+                    vec![rng.enumeration(&TEX_GEN_MODES) as f32]
+                } else {
+                    rng.params(f)
+                },
+            },
+            3 => Op::ActiveTexture(rng.enumeration(&TEXTURE_UNITS)),
+            _ => Op::ClientActiveTexture(rng.enumeration(&TEXTURE_UNITS)),
+        },
         58 | 59 => Op::Pointer {
             kind: rng.pick(&ARRAY_KINDS),
             size: rng.range(-1, 5) as i32,
@@ -1816,6 +1876,14 @@ fn apply(
             ctx.tex_coord(*t);
             Ok(())
         }
+        Op::MultiTexCoord { target, coords } => ctx.multi_tex_coord(*target, *coords),
+        Op::TexGen {
+            coord,
+            pname,
+            params,
+        } => ctx.tex_gen(*coord, *pname, params),
+        Op::ActiveTexture(texture) => ctx.active_texture(*texture),
+        Op::ClientActiveTexture(texture) => ctx.client_active_texture(*texture),
         Op::EdgeFlag(e) => {
             ctx.edge_flag(*e);
             Ok(())

@@ -16,6 +16,7 @@ use crate::state::material::material_param_count;
 use crate::error::GlError;
 use crate::commands::texture::SubImageArgs;
 use crate::state::texture::{tex_env_count, tex_parameter_count};
+use crate::state::texgen::tex_gen_param_count;
 
 #[unsafe(no_mangle)]
 pub extern "C" fn glBegin(mode: GLenum) {
@@ -2268,6 +2269,503 @@ pub extern "C" fn glPopClientAttrib() {
     })
 }
 
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexGeni(coord: GLenum, pname: GLenum, param: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glTexGeni { coord, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.tex_gen_scalar(coord, pname, param as f64)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, tex_gen_param_count(pname)) };
+        if ctx.record(|| TableCommand::glTexGeniv { coord, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.tex_gen(coord, pname, params)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexGenf(coord: GLenum, pname: GLenum, param: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glTexGenf { coord, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.tex_gen_scalar(coord, pname, param as f64)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, tex_gen_param_count(pname)) };
+        if ctx.record(|| TableCommand::glTexGenfv { coord, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.tex_gen(coord, pname, params)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexGend(coord: GLenum, pname: GLenum, param: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glTexGend { coord, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.tex_gen_scalar(coord, pname, param)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, tex_gen_param_count(pname)) };
+        if ctx.record(|| TableCommand::glTexGendv { coord, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.tex_gen(coord, pname, params)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexGeniv(coord: GLenum, pname: GLenum, params: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_gen_i(coord, pname)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexGenfv(coord: GLenum, pname: GLenum, params: *mut GLfloat) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_gen(coord, pname).map(|v| v.into_iter().map(|x| x as f32).collect::<Vec<_>>())?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexGendv(coord: GLenum, pname: GLenum, params: *mut GLdouble) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_gen(coord, pname)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// Selects the texture unit whose texture coordinate array the array commands address.
+#[unsafe(no_mangle)]
+pub extern "C" fn glClientActiveTexture(texture: GLenum) {
+    with_context(|ctx| {
+        ctx.client_active_texture(texture)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord1s(target: GLenum, s: GLshort) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord1s { target, s }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord1sv(target: GLenum, v: *const GLshort) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 1) };
+        if ctx.record(|| TableCommand::glMultiTexCoord1sv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 1>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord1i(target: GLenum, s: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord1i { target, s }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord1iv(target: GLenum, v: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 1) };
+        if ctx.record(|| TableCommand::glMultiTexCoord1iv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 1>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord1f(target: GLenum, s: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord1f { target, s }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord1fv(target: GLenum, v: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 1) };
+        if ctx.record(|| TableCommand::glMultiTexCoord1fv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 1>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord1d(target: GLenum, s: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord1d { target, s }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord1dv(target: GLenum, v: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 1) };
+        if ctx.record(|| TableCommand::glMultiTexCoord1dv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 1>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord2s(target: GLenum, s: GLshort, t: GLshort) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord2s { target, s, t }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s, t])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord2sv(target: GLenum, v: *const GLshort) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 2) };
+        if ctx.record(|| TableCommand::glMultiTexCoord2sv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 2>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord2i(target: GLenum, s: GLint, t: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord2i { target, s, t }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s, t])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord2iv(target: GLenum, v: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 2) };
+        if ctx.record(|| TableCommand::glMultiTexCoord2iv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 2>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord2f(target: GLenum, s: GLfloat, t: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord2f { target, s, t }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s, t])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord2fv(target: GLenum, v: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 2) };
+        if ctx.record(|| TableCommand::glMultiTexCoord2fv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 2>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord2d(target: GLenum, s: GLdouble, t: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord2d { target, s, t }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s, t])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord2dv(target: GLenum, v: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 2) };
+        if ctx.record(|| TableCommand::glMultiTexCoord2dv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 2>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord3s(target: GLenum, s: GLshort, t: GLshort, r: GLshort) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord3s { target, s, t, r }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s, t, r])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord3sv(target: GLenum, v: *const GLshort) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glMultiTexCoord3sv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 3>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord3i(target: GLenum, s: GLint, t: GLint, r: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord3i { target, s, t, r }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s, t, r])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord3iv(target: GLenum, v: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glMultiTexCoord3iv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 3>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord3f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord3f { target, s, t, r }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s, t, r])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord3fv(target: GLenum, v: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glMultiTexCoord3fv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 3>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord3d(target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord3d { target, s, t, r }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s, t, r])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord3dv(target: GLenum, v: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 3) };
+        if ctx.record(|| TableCommand::glMultiTexCoord3dv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 3>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord4s(target: GLenum, s: GLshort, t: GLshort, r: GLshort, q: GLshort) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord4s { target, s, t, r, q }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s, t, r, q])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord4sv(target: GLenum, v: *const GLshort) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 4) };
+        if ctx.record(|| TableCommand::glMultiTexCoord4sv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 4>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord4i(target: GLenum, s: GLint, t: GLint, r: GLint, q: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord4i { target, s, t, r, q }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s, t, r, q])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord4iv(target: GLenum, v: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 4) };
+        if ctx.record(|| TableCommand::glMultiTexCoord4iv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 4>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord4f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord4f { target, s, t, r, q }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s, t, r, q])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord4fv(target: GLenum, v: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 4) };
+        if ctx.record(|| TableCommand::glMultiTexCoord4fv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 4>(target, v)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord4d(target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord4d { target, s, t, r, q }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_of(target, [s, t, r, q])
+    })
+}
+
+/// # Safety
+/// `v` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultiTexCoord4dv(target: GLenum, v: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let v = unsafe { read(v, 4) };
+        if ctx.record(|| TableCommand::glMultiTexCoord4dv { target, v: v.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord_v::<_, 4>(target, v)
+    })
+}
+
 /// A command of the table compiled into a display list: its parameters, and a copy of the
 /// values its pointers gave at compile time.
 #[allow(non_camel_case_types)]
@@ -2443,6 +2941,44 @@ pub enum TableCommand {
     glCopyTexSubImage3D { target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei },
     glPushAttrib { mask: GLbitfield },
     glPopAttrib {},
+    glTexGeni { coord: GLenum, pname: GLenum, param: GLint },
+    glTexGeniv { coord: GLenum, pname: GLenum, params: Vec<GLint> },
+    glTexGenf { coord: GLenum, pname: GLenum, param: GLfloat },
+    glTexGenfv { coord: GLenum, pname: GLenum, params: Vec<GLfloat> },
+    glTexGend { coord: GLenum, pname: GLenum, param: GLdouble },
+    glTexGendv { coord: GLenum, pname: GLenum, params: Vec<GLdouble> },
+    glMultiTexCoord1s { target: GLenum, s: GLshort },
+    glMultiTexCoord1sv { target: GLenum, v: Vec<GLshort> },
+    glMultiTexCoord1i { target: GLenum, s: GLint },
+    glMultiTexCoord1iv { target: GLenum, v: Vec<GLint> },
+    glMultiTexCoord1f { target: GLenum, s: GLfloat },
+    glMultiTexCoord1fv { target: GLenum, v: Vec<GLfloat> },
+    glMultiTexCoord1d { target: GLenum, s: GLdouble },
+    glMultiTexCoord1dv { target: GLenum, v: Vec<GLdouble> },
+    glMultiTexCoord2s { target: GLenum, s: GLshort, t: GLshort },
+    glMultiTexCoord2sv { target: GLenum, v: Vec<GLshort> },
+    glMultiTexCoord2i { target: GLenum, s: GLint, t: GLint },
+    glMultiTexCoord2iv { target: GLenum, v: Vec<GLint> },
+    glMultiTexCoord2f { target: GLenum, s: GLfloat, t: GLfloat },
+    glMultiTexCoord2fv { target: GLenum, v: Vec<GLfloat> },
+    glMultiTexCoord2d { target: GLenum, s: GLdouble, t: GLdouble },
+    glMultiTexCoord2dv { target: GLenum, v: Vec<GLdouble> },
+    glMultiTexCoord3s { target: GLenum, s: GLshort, t: GLshort, r: GLshort },
+    glMultiTexCoord3sv { target: GLenum, v: Vec<GLshort> },
+    glMultiTexCoord3i { target: GLenum, s: GLint, t: GLint, r: GLint },
+    glMultiTexCoord3iv { target: GLenum, v: Vec<GLint> },
+    glMultiTexCoord3f { target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat },
+    glMultiTexCoord3fv { target: GLenum, v: Vec<GLfloat> },
+    glMultiTexCoord3d { target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble },
+    glMultiTexCoord3dv { target: GLenum, v: Vec<GLdouble> },
+    glMultiTexCoord4s { target: GLenum, s: GLshort, t: GLshort, r: GLshort, q: GLshort },
+    glMultiTexCoord4sv { target: GLenum, v: Vec<GLshort> },
+    glMultiTexCoord4i { target: GLenum, s: GLint, t: GLint, r: GLint, q: GLint },
+    glMultiTexCoord4iv { target: GLenum, v: Vec<GLint> },
+    glMultiTexCoord4f { target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat },
+    glMultiTexCoord4fv { target: GLenum, v: Vec<GLfloat> },
+    glMultiTexCoord4d { target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble },
+    glMultiTexCoord4dv { target: GLenum, v: Vec<GLdouble> },
 }
 
 impl TableCommand {
@@ -3325,6 +3861,226 @@ impl TableCommand {
             }
             TableCommand::glPopAttrib {} => {
                 ctx.pop_attrib()
+            }
+            TableCommand::glTexGeni { coord, pname, param } => {
+                let coord = *coord;
+                let pname = *pname;
+                let param = *param;
+                ctx.tex_gen_scalar(coord, pname, param as f64)
+            }
+            TableCommand::glTexGeniv { coord, pname, params } => {
+                let coord = *coord;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.tex_gen(coord, pname, params)
+            }
+            TableCommand::glTexGenf { coord, pname, param } => {
+                let coord = *coord;
+                let pname = *pname;
+                let param = *param;
+                ctx.tex_gen_scalar(coord, pname, param as f64)
+            }
+            TableCommand::glTexGenfv { coord, pname, params } => {
+                let coord = *coord;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.tex_gen(coord, pname, params)
+            }
+            TableCommand::glTexGend { coord, pname, param } => {
+                let coord = *coord;
+                let pname = *pname;
+                let param = *param;
+                ctx.tex_gen_scalar(coord, pname, param)
+            }
+            TableCommand::glTexGendv { coord, pname, params } => {
+                let coord = *coord;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.tex_gen(coord, pname, params)
+            }
+            TableCommand::glMultiTexCoord1s { target, s } => {
+                let target = *target;
+                let s = *s;
+                ctx.multi_tex_coord_of(target, [s])
+            }
+            TableCommand::glMultiTexCoord1sv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 1>(target, v)
+            }
+            TableCommand::glMultiTexCoord1i { target, s } => {
+                let target = *target;
+                let s = *s;
+                ctx.multi_tex_coord_of(target, [s])
+            }
+            TableCommand::glMultiTexCoord1iv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 1>(target, v)
+            }
+            TableCommand::glMultiTexCoord1f { target, s } => {
+                let target = *target;
+                let s = *s;
+                ctx.multi_tex_coord_of(target, [s])
+            }
+            TableCommand::glMultiTexCoord1fv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 1>(target, v)
+            }
+            TableCommand::glMultiTexCoord1d { target, s } => {
+                let target = *target;
+                let s = *s;
+                ctx.multi_tex_coord_of(target, [s])
+            }
+            TableCommand::glMultiTexCoord1dv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 1>(target, v)
+            }
+            TableCommand::glMultiTexCoord2s { target, s, t } => {
+                let target = *target;
+                let s = *s;
+                let t = *t;
+                ctx.multi_tex_coord_of(target, [s, t])
+            }
+            TableCommand::glMultiTexCoord2sv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 2>(target, v)
+            }
+            TableCommand::glMultiTexCoord2i { target, s, t } => {
+                let target = *target;
+                let s = *s;
+                let t = *t;
+                ctx.multi_tex_coord_of(target, [s, t])
+            }
+            TableCommand::glMultiTexCoord2iv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 2>(target, v)
+            }
+            TableCommand::glMultiTexCoord2f { target, s, t } => {
+                let target = *target;
+                let s = *s;
+                let t = *t;
+                ctx.multi_tex_coord_of(target, [s, t])
+            }
+            TableCommand::glMultiTexCoord2fv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 2>(target, v)
+            }
+            TableCommand::glMultiTexCoord2d { target, s, t } => {
+                let target = *target;
+                let s = *s;
+                let t = *t;
+                ctx.multi_tex_coord_of(target, [s, t])
+            }
+            TableCommand::glMultiTexCoord2dv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 2>(target, v)
+            }
+            TableCommand::glMultiTexCoord3s { target, s, t, r } => {
+                let target = *target;
+                let s = *s;
+                let t = *t;
+                let r = *r;
+                ctx.multi_tex_coord_of(target, [s, t, r])
+            }
+            TableCommand::glMultiTexCoord3sv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 3>(target, v)
+            }
+            TableCommand::glMultiTexCoord3i { target, s, t, r } => {
+                let target = *target;
+                let s = *s;
+                let t = *t;
+                let r = *r;
+                ctx.multi_tex_coord_of(target, [s, t, r])
+            }
+            TableCommand::glMultiTexCoord3iv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 3>(target, v)
+            }
+            TableCommand::glMultiTexCoord3f { target, s, t, r } => {
+                let target = *target;
+                let s = *s;
+                let t = *t;
+                let r = *r;
+                ctx.multi_tex_coord_of(target, [s, t, r])
+            }
+            TableCommand::glMultiTexCoord3fv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 3>(target, v)
+            }
+            TableCommand::glMultiTexCoord3d { target, s, t, r } => {
+                let target = *target;
+                let s = *s;
+                let t = *t;
+                let r = *r;
+                ctx.multi_tex_coord_of(target, [s, t, r])
+            }
+            TableCommand::glMultiTexCoord3dv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 3>(target, v)
+            }
+            TableCommand::glMultiTexCoord4s { target, s, t, r, q } => {
+                let target = *target;
+                let s = *s;
+                let t = *t;
+                let r = *r;
+                let q = *q;
+                ctx.multi_tex_coord_of(target, [s, t, r, q])
+            }
+            TableCommand::glMultiTexCoord4sv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 4>(target, v)
+            }
+            TableCommand::glMultiTexCoord4i { target, s, t, r, q } => {
+                let target = *target;
+                let s = *s;
+                let t = *t;
+                let r = *r;
+                let q = *q;
+                ctx.multi_tex_coord_of(target, [s, t, r, q])
+            }
+            TableCommand::glMultiTexCoord4iv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 4>(target, v)
+            }
+            TableCommand::glMultiTexCoord4f { target, s, t, r, q } => {
+                let target = *target;
+                let s = *s;
+                let t = *t;
+                let r = *r;
+                let q = *q;
+                ctx.multi_tex_coord_of(target, [s, t, r, q])
+            }
+            TableCommand::glMultiTexCoord4fv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 4>(target, v)
+            }
+            TableCommand::glMultiTexCoord4d { target, s, t, r, q } => {
+                let target = *target;
+                let s = *s;
+                let t = *t;
+                let r = *r;
+                let q = *q;
+                ctx.multi_tex_coord_of(target, [s, t, r, q])
+            }
+            TableCommand::glMultiTexCoord4dv { target, v } => {
+                let target = *target;
+                let v = &v[..];
+                ctx.multi_tex_coord_v::<_, 4>(target, v)
             }
         }
     }

@@ -13,7 +13,7 @@ use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use crate::pipeline::vertex::CurrentAttribs;
 use crate::state::arrays::VertexArrays;
-use crate::state::enables::{EVAL_CAPABILITIES, MAX_CLIP_PLANES, TEXTURE_CAPABILITIES};
+use crate::state::enables::{EVAL_CAPABILITIES, MAX_CLIP_PLANES};
 use crate::state::fog::FogAttribs;
 use crate::state::fragment::{
     AccumBufferAttribs, ColorBufferAttribs, DepthBufferAttribs, ScissorAttribs,
@@ -27,7 +27,7 @@ use crate::state::pixel::{PixelModeAttribs, PixelStoreAttribs};
 use crate::state::rasterization::{
     LineAttribs, MultisampleAttribs, PointAttribs, PolygonAttribs, PolygonStippleAttribs,
 };
-use crate::state::texture::{MAX_TEXTURE_UNITS, TextureAttribs};
+use crate::state::texture::{MAX_TEXTURE_UNITS, TextureAttribs, UnitEnables};
 
 /// GL_MAX_ATTRIB_STACK_DEPTH (the minimum GL allows, and Mesa's).
 pub const MAX_ATTRIB_STACK_DEPTH: usize = 16;
@@ -181,14 +181,12 @@ attribute_groups! {
     GL_ENABLE_BIT => ENABLE_BIT_CAPABILITIES,
     // Only GL_AUTO_NORMAL: evaluator maps, grids and their enables do not exist yet.
     GL_EVAL_BIT => EVAL_CAPABILITIES,
-    // The coordinate generation enables (their modes and planes do not exist yet).
-    GL_TEXTURE_BIT => TEXTURE_CAPABILITIES,
     }
     custom {
-    // Every unit's target enables (the capabilities above are the active unit's), restored
-    // after them.
+    // Every unit's target and coordinate generation enables (the capabilities above are the
+    // active unit's), restored after them.
     GL_ENABLE_BIT => TextureEnables(
-        [[bool; 4]; MAX_TEXTURE_UNITS],
+        [UnitEnables; MAX_TEXTURE_UNITS],
         |ctx: &Context| ctx.textures.enables(),
         |ctx: &mut Context, saved| ctx.textures.restore_enables(saved)
     ),

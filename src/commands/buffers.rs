@@ -160,7 +160,7 @@ pub(crate) fn with_stores<'a>(
     let mut sources = *sources;
     for (kind, store) in ALL_KINDS.into_iter().zip(stores) {
         let Some(store) = store else { continue };
-        let array = arrays.get(kind);
+        let array = arrays.drawn(kind);
         let start = sources
             .base
             .checked_mul(array.effective_stride())

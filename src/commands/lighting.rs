@@ -242,6 +242,7 @@ impl Context {
             Capability::ColorMaterial => self.color_material.enabled = enabled,
             Capability::CullFace => self.enables.cull_face = enabled,
             Capability::ClipPlane(i) => self.enables.clip_planes[i] = enabled,
+            Capability::TexGen(i) => self.textures.unit_mut().tex_gen.coords[i].enabled = enabled,
             Capability::Other(cap) => self.enables.set_other(cap, enabled),
         }
         self.invalidate();
@@ -265,6 +266,7 @@ impl Context {
             Capability::ColorMaterial => self.color_material.enabled,
             Capability::CullFace => self.enables.cull_face,
             Capability::ClipPlane(i) => self.enables.clip_planes[i],
+            Capability::TexGen(i) => self.textures.unit().tex_gen.coords[i].enabled,
             Capability::Other(cap) => self.enables.other(cap),
         })
     }

@@ -16,7 +16,11 @@ impl Context {
 
     fn update_matrix(&mut self, update: impl FnOnce(&mut Mat4)) -> GlResult {
         self.outside_begin_end()?;
-        update(self.matrices.current_mut().top_mut());
+        update(
+            self.matrices
+                .current_mut(self.textures.active_unit)
+                .top_mut(),
+        );
         self.invalidate();
         Ok(())
     }
@@ -97,13 +101,13 @@ impl Context {
     /// glPushMatrix.
     pub fn push_matrix(&mut self) -> GlResult {
         self.outside_begin_end()?;
-        self.matrices.current_mut().push()
+        self.matrices.current_mut(self.textures.active_unit).push()
     }
 
     /// glPopMatrix.
     pub fn pop_matrix(&mut self) -> GlResult {
         self.outside_begin_end()?;
-        self.matrices.current_mut().pop()?;
+        self.matrices.current_mut(self.textures.active_unit).pop()?;
         self.invalidate();
         Ok(())
     }

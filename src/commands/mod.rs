@@ -9,6 +9,7 @@ pub mod fragment;
 pub mod lighting;
 pub mod list;
 pub mod matrix;
+pub mod multitexture;
 pub mod pixel;
 pub mod query;
 pub mod raster;

@@ -3,12 +3,14 @@
 //! and glEnd (§2.6.3) and changes nothing on an error.
 
 use super::query::{StateValue, floats, int};
+use crate::commands::raster_pos::pixel_rectangle_format;
 use crate::context::Context;
-use crate::error::GlResult;
+use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use crate::state::pixel::{
-    MAX_PIXEL_MAP_TABLE, StoreParam, TransferValue, is_index_map, pixel_map_index,
+    MAX_PIXEL_MAP_TABLE, PixelStoreModes, StoreParam, TransferValue, is_index_map, pixel_map_index,
 };
+use crate::state::texture_image::{Layout, PixelFormat, pack, pixel_type, transfer, write_element};
 
 impl Context {
     /// glPixelStorei / glPixelStoref (§3.6.1, §4.3.2).
@@ -120,5 +122,193 @@ impl Context {
             GL_MAX_PIXEL_MAP_TABLE => int(MAX_PIXEL_MAP_TABLE as GLint),
             _ => return None,
         })
+    }
+}
+
+/// Where a width x height pixel rectangle lies in client memory under `modes` (§4.3.2 for
+/// packing, §3.6.4 for unpacking): its first byte, the bytes from one row to the next and
+/// the bytes of the whole span. `pixel_bytes` is None for GL_BITMAP (a bit a pixel).
+struct RectangleLayout {
+    start: usize,
+    row_stride: usize,
+    span: usize,
+}
+
+impl RectangleLayout {
+    fn new(
+        modes: &PixelStoreModes,
+        pixel_bytes: Option<usize>,
+        element: usize,
+        [width, height]: [usize; 2],
+    ) -> RectangleLayout {
+        let row_length = if modes.row_length > 0 {
+            modes.row_length as usize
+        } else {
+            width
+        };
+        let alignment = modes.alignment.max(1) as usize;
+        let skip_pixels = modes.skip_pixels.max(0) as usize;
+        let (row_bytes, element, skip_bytes, last_row_bytes) = match pixel_bytes {
+            Some(bytes) => (
+                row_length * bytes,
+                element,
+                skip_pixels * bytes,
+                width * bytes,
+            ),
+            // Bits: the skipped pixels and the row's pixels round up to whole bytes.
+            None => (
+                row_length.div_ceil(8),
+                1,
+                skip_pixels / 8,
+                (skip_pixels % 8 + width).div_ceil(8),
+            ),
+        };
+        let row_stride = if element >= alignment {
+            row_bytes
+        } else {
+            row_bytes.div_ceil(alignment) * alignment
+        };
+        let start = modes.skip_rows.max(0) as usize * row_stride + skip_bytes;
+        let span = if width == 0 || height == 0 {
+            0
+        } else {
+            start + (height - 1) * row_stride + last_row_bytes
+        };
+        RectangleLayout {
+            start,
+            row_stride,
+            span,
+        }
+    }
+}
+
+impl Context {
+    /// The layout glReadPixels writes, or None for arguments it rejects.
+    fn read_pixels_layout(
+        &self,
+        [width, height]: [GLsizei; 2],
+        format: GLenum,
+        ty: GLenum,
+    ) -> Option<RectangleLayout> {
+        let pixel_bytes = pixel_rectangle_format(format, ty).ok()?;
+        let element = pixel_type(ty).map_or(1, |t| t.size);
+        let size = [usize::try_from(width).ok()?, usize::try_from(height).ok()?];
+        Some(RectangleLayout::new(
+            &self.pixel_store.pack,
+            pixel_bytes,
+            element,
+            size,
+        ))
+    }
+
+    /// How many bytes glReadPixels writes into under the current pack modes (0 for
+    /// arguments it rejects).
+    pub fn read_pixels_span(
+        &self,
+        width: GLsizei,
+        height: GLsizei,
+        format: GLenum,
+        ty: GLenum,
+    ) -> usize {
+        self.read_pixels_layout([width, height], format, ty)
+            .map_or(0, |layout| layout.span)
+    }
+
+    /// glReadPixels (§4.3.2): sizes, then the format and type are checked; color indices are
+    /// GL_INVALID_OPERATION in RGBA mode. fflight's framebuffer holds nothing drawn: every
+    /// pixel read is color (0, 0, 0, 0), depth 0 and stencil 0, which then go through pixel
+    /// transfer (§3.6.5: scale, bias and maps; index shift, offset and map) and are packed
+    /// with the GL_PACK_* modes into `pixels`; the bytes between them are left as they are.
+    pub fn read_pixels(
+        &mut self,
+        [width, height]: [GLsizei; 2],
+        format: GLenum,
+        ty: GLenum,
+        pixels: &mut [u8],
+    ) -> GlResult {
+        self.outside_begin_end()?;
+        if width < 0 || height < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        pixel_rectangle_format(format, ty)?;
+        if format == GL_COLOR_INDEX {
+            return Err(GlError::InvalidOperation);
+        }
+        let layout = self
+            .read_pixels_layout([width, height], format, ty)
+            .ok_or(GlError::InvalidValue)?;
+        if pixels.len() < layout.span {
+            // A NULL pointer (fflight's choice: an error, nothing written).
+            return Err(GlError::InvalidValue);
+        }
+        let size = [width as usize, height as usize, 1];
+        if format == GL_STENCIL_INDEX {
+            self.pack_stencil(&layout, [size[0], size[1]], ty, pixels);
+            return Ok(());
+        }
+        let format = PixelFormat::new(format, ty)?;
+        let pixel = transfer(&self.pixel_mode, &self.pixel_maps, [0.0; 4], format.depth);
+        let colors = vec![pixel; size[0] * size[1]];
+        let modes = &self.pixel_store.pack;
+        pack(
+            &colors,
+            pixels,
+            modes,
+            &format,
+            &Layout::new(modes, &format, size, false),
+        )
+    }
+
+    /// The stencil index every pixel reads (0 shifted, offset and mapped, §3.6.5) packed as
+    /// `ty` (GL_BITMAP: its lowest bit).
+    fn pack_stencil(
+        &self,
+        layout: &RectangleLayout,
+        [width, height]: [usize; 2],
+        ty: GLenum,
+        out: &mut [u8],
+    ) {
+        let mode = &self.pixel_mode;
+        let shifted = if mode.index_shift >= 0 {
+            0i64 << mode.index_shift.min(63)
+        } else {
+            0
+        };
+        let mut index = shifted + i64::from(mode.index_offset);
+        if mode.map_stencil {
+            let map = &self.pixel_maps.maps[1];
+            index = map[(index.max(0) as usize) & (map.len() - 1)] as i64;
+        }
+        let modes = &self.pixel_store.pack;
+        let skip = modes.skip_pixels.max(0) as usize;
+        for y in 0..height {
+            let row = layout.start + y * layout.row_stride;
+            for x in 0..width {
+                match pixel_type(ty) {
+                    Some(t) => {
+                        let raw = if ty == GL_FLOAT {
+                            (index as f32).to_bits()
+                        } else {
+                            index as u32
+                        };
+                        write_element(out, row + x * t.size, t.size, modes.swap_bytes, raw);
+                    }
+                    None => {
+                        let bit = skip % 8 + x;
+                        let mask = if modes.lsb_first {
+                            1u8 << (bit % 8)
+                        } else {
+                            0x80u8 >> (bit % 8)
+                        };
+                        let byte = &mut out[row + bit / 8];
+                        if index & 1 != 0 {
+                            *byte |= mask;
+                        } else {
+                            *byte &= !mask;
+                        }
+                    }
+                }
+            }
+        }
     }
 }

@@ -90,7 +90,7 @@ impl Context {
             GL_MAX_VIEWPORT_DIMS => StateValue::Ints(vec![MAX_VIEWPORT_DIMS; 2]),
             GL_MAX_MODELVIEW_STACK_DEPTH => int(m.modelview.max_depth() as i32),
             GL_MAX_PROJECTION_STACK_DEPTH => int(m.projection.max_depth() as i32),
-            GL_MAX_TEXTURE_STACK_DEPTH => int(m.texture.max_depth() as i32),
+            GL_MAX_TEXTURE_STACK_DEPTH => int(m.texture[0].max_depth() as i32),
             GL_MAX_ATTRIB_STACK_DEPTH => int(MAX_ATTRIB_STACK_DEPTH as i32),
             GL_MAX_CLIENT_ATTRIB_STACK_DEPTH => int(MAX_CLIENT_ATTRIB_STACK_DEPTH as i32),
             GL_ATTRIB_STACK_DEPTH => int(self.attrib_stack_depth() as i32),
@@ -98,7 +98,12 @@ impl Context {
             GL_MAX_ELEMENTS_VERTICES | GL_MAX_ELEMENTS_INDICES => int(MAX_ELEMENTS),
             GL_CURRENT_COLOR => normalized(&self.current.color.to_array()),
             GL_CURRENT_NORMAL => normalized(&self.current.normal.to_array()),
-            GL_CURRENT_TEXTURE_COORDS => floats(&self.current.tex_coord.to_array()),
+            GL_CURRENT_TEXTURE_COORDS => floats(
+                &self
+                    .current
+                    .unit_tex_coord(self.textures.active_unit)
+                    .to_array(),
+            ),
             GL_CURRENT_SECONDARY_COLOR => normalized(&self.current.secondary_color.to_array()),
             GL_CURRENT_FOG_COORD => floats(&[self.current.fog_coord]),
             GL_CURRENT_RASTER_POSITION => floats(&self.raster_position.window.to_array()),
@@ -107,7 +112,10 @@ impl Context {
             GL_CURRENT_RASTER_SECONDARY_COLOR => {
                 normalized(&self.raster_position.secondary_color.to_array())
             }
-            GL_CURRENT_RASTER_TEXTURE_COORDS => floats(&self.raster_position.tex_coord.to_array()),
+            GL_CURRENT_RASTER_TEXTURE_COORDS => {
+                let unit = self.textures.active_unit;
+                floats(&self.raster_position.unit_tex_coord(unit).to_array())
+            }
             GL_CURRENT_RASTER_DISTANCE => floats(&[self.raster_position.distance]),
             GL_EDGE_FLAG => StateValue::Bools(vec![self.current.edge_flag]),
             GL_LIGHT_MODEL_AMBIENT => normalized(&self.light_model.ambient.to_array()),
@@ -117,17 +125,22 @@ impl Context {
             GL_COLOR_MATERIAL_FACE => enumeration(self.color_material.face),
             GL_COLOR_MATERIAL_PARAMETER => enumeration(self.color_material.mode),
             GL_MATRIX_MODE => enumeration(m.mode),
-            GL_MODELVIEW_MATRIX | GL_PROJECTION_MATRIX | GL_TEXTURE_MATRIX => {
-                floats(&m.stack(matrix_of(pname)).top().to_cols_array())
-            }
+            GL_MODELVIEW_MATRIX | GL_PROJECTION_MATRIX | GL_TEXTURE_MATRIX => floats(
+                &m.stack(matrix_of(pname), self.textures.active_unit)
+                    .top()
+                    .to_cols_array(),
+            ),
             GL_TRANSPOSE_MODELVIEW_MATRIX
             | GL_TRANSPOSE_PROJECTION_MATRIX
-            | GL_TRANSPOSE_TEXTURE_MATRIX => {
-                floats(&m.stack(matrix_of(pname)).top().transpose().to_cols_array())
-            }
+            | GL_TRANSPOSE_TEXTURE_MATRIX => floats(
+                &m.stack(matrix_of(pname), self.textures.active_unit)
+                    .top()
+                    .transpose()
+                    .to_cols_array(),
+            ),
             GL_MODELVIEW_STACK_DEPTH => int(m.modelview.depth() as i32),
             GL_PROJECTION_STACK_DEPTH => int(m.projection.depth() as i32),
-            GL_TEXTURE_STACK_DEPTH => int(m.texture.depth() as i32),
+            GL_TEXTURE_STACK_DEPTH => int(m.texture[self.textures.active_unit].depth() as i32),
             GL_VIEWPORT => StateValue::Ints(self.raster.viewport.to_vec()),
             GL_DEPTH_RANGE => StateValue::Normalized(self.raster.depth_range.to_vec()),
             GL_SHADE_MODEL => enumeration(self.raster.shade_model),

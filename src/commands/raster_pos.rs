@@ -1,7 +1,7 @@
 //! The current raster position (§2.13): glRasterPos processes one position like a vertex and
 //! keeps the result for the queries of §6.1.
 
-use glam::Vec4;
+use glam::{DVec3, DVec4, Vec4};
 
 use crate::context::{Context, RenderMode};
 use crate::error::{GlError, GlResult};
@@ -9,6 +9,9 @@ use crate::gl::*;
 use crate::lighting::clamp01;
 use crate::pipeline::clip::point_visible;
 use crate::pipeline::feedback::FeedbackVertex;
+use crate::state::texgen::GenInput;
+use crate::state::texture::MAX_TEXTURE_UNITS;
+use crate::state::texture_image::{format_components, pixel_type};
 
 /// The current raster position and the attributes it carries (table 6.5).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -19,8 +22,10 @@ pub struct RasterPosition {
     /// The front primary color, lit when lighting is on.
     pub color: Vec4,
     pub secondary_color: Vec4,
-    /// The texture coordinate after the texture matrix.
+    /// Texture unit 0's texture coordinates, generated and through the texture matrix.
     pub tex_coord: Vec4,
+    /// Texture units 1 and up's.
+    pub other_tex_coords: [Vec4; MAX_TEXTURE_UNITS - 1],
     /// The eye-space distance from the origin to the position.
     pub distance: f32,
 }
@@ -33,12 +38,42 @@ impl Default for RasterPosition {
             color: Vec4::ONE,
             secondary_color: Vec4::W,
             tex_coord: Vec4::W,
+            other_tex_coords: [Vec4::W; MAX_TEXTURE_UNITS - 1],
             distance: 0.0,
         }
     }
 }
 
+impl RasterPosition {
+    /// Texture unit `unit`'s texture coordinates.
+    pub fn unit_tex_coord(&self, unit: usize) -> Vec4 {
+        match unit {
+            0 => self.tex_coord,
+            _ => self.other_tex_coords[unit - 1],
+        }
+    }
+}
+
 impl Context {
+    /// Texture unit `unit`'s texture coordinates for a vertex at `object` (eye coordinates
+    /// `eye`) with eye-space normal `normal` (§2.11.4, §2.11.2): what the vertex path
+    /// computes for unit 0.
+    fn unit_tex_coord(&self, unit: usize, object: Vec4, eye: DVec4, normal: DVec3) -> Vec4 {
+        let current = self.current.unit_tex_coord(unit);
+        let coords = match self.textures.units[unit].tex_gen.prepared() {
+            None => current,
+            Some(tex_gen) => {
+                let input = GenInput {
+                    object: object.as_dvec4(),
+                    eye,
+                    normal,
+                };
+                tex_gen.generate(&input, current)
+            }
+        };
+        *self.matrices.texture[unit].top() * coords
+    }
+
     /// glRasterPos (§2.13): the position is transformed and lit as a vertex with the current
     /// normal, colors and texture coordinate, then clipped as a point against the view volume
     /// and the enabled user clip planes. If culled, the raster position becomes invalid and
@@ -48,7 +83,9 @@ impl Context {
     pub fn raster_pos(&mut self, object: Vec4) -> GlResult {
         self.outside_begin_end()?;
         let attribs = self.current;
-        let vertex = self.derived().process(object, &attribs);
+        let derived = self.derived();
+        let vertex = derived.process(object, &attribs);
+        let eye_normal = derived.transform.eye_normal(attribs.normal);
         if !point_visible(&self.clip_planes(), &vertex) {
             self.raster_position.valid = false;
             return Ok(());
@@ -67,6 +104,9 @@ impl Context {
             color: vertex.colors.front.primary,
             secondary_color: vertex.colors.front.secondary,
             tex_coord: vertex.tex_coord,
+            other_tex_coords: std::array::from_fn(|i| {
+                self.unit_tex_coord(i + 1, object, eye, eye_normal)
+            }),
             distance: self.raster_distance(eye_point.length() as f32),
         };
         if self.render_mode == RenderMode::Select {
@@ -106,6 +146,7 @@ impl Context {
             color: clamp01(self.current.color),
             secondary_color: clamp01(self.current.secondary_color),
             tex_coord: self.current.tex_coord,
+            other_tex_coords: self.current.other_tex_coords,
             distance: self.raster_distance(0.0),
         };
         if self.render_mode == RenderMode::Select {
@@ -180,5 +221,48 @@ impl Context {
                 Err(GlError::InvalidValue)
             }
         }
+    }
+}
+
+/// The format and type of glDrawPixels and glReadPixels (§3.6.4, tables 3.5 and 3.6):
+/// GL_INVALID_ENUM for a format or type that is none, or GL_BITMAP with a format other than
+/// the index ones; GL_INVALID_OPERATION for a packed type whose component count is not the
+/// format's. Returns the bytes of one pixel, or None for GL_BITMAP (a bit a pixel).
+pub(crate) fn pixel_rectangle_format(format: GLenum, ty: GLenum) -> GlResult<Option<usize>> {
+    let index = matches!(format, GL_COLOR_INDEX | GL_STENCIL_INDEX);
+    let components = match format {
+        GL_COLOR_INDEX | GL_STENCIL_INDEX => 1,
+        _ => format_components(format).ok_or(GlError::InvalidEnum)?.len(),
+    };
+    if ty == GL_BITMAP {
+        return if index {
+            Ok(None)
+        } else {
+            Err(GlError::InvalidEnum)
+        };
+    }
+    let ty = pixel_type(ty).ok_or(GlError::InvalidEnum)?;
+    match ty.packed {
+        Some((fields, _)) if fields.len() != components || index => Err(GlError::InvalidOperation),
+        Some(_) => Ok(Some(ty.size)),
+        None => Ok(Some(ty.size * components)),
+    }
+}
+
+impl Context {
+    /// glDrawPixels (§3.6.4, §4.3.1): checked (sizes, then the format and type), and with a
+    /// valid raster position fed back as GL_DRAW_PIXEL_TOKEN and the raster position's
+    /// vertex (§5.3). The pixels are not read: there is no framebuffer to draw them into. Not
+    /// a selection hit (§5.2 counts primitives and raster positions only).
+    pub fn draw_pixels(&mut self, width: i32, height: i32, format: GLenum, ty: GLenum) -> GlResult {
+        self.outside_begin_end()?;
+        if width < 0 || height < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        pixel_rectangle_format(format, ty)?;
+        if self.raster_position.valid {
+            self.feed_back_raster_position(GL_DRAW_PIXEL_TOKEN);
+        }
+        Ok(())
     }
 }

@@ -307,6 +307,9 @@ impl Context {
         }
         Some(match pname {
             GL_ACTIVE_TEXTURE => enumeration(GL_TEXTURE0 + self.textures.active_unit as GLenum),
+            GL_CLIENT_ACTIVE_TEXTURE => {
+                enumeration(GL_TEXTURE0 + self.arrays.client_active_texture as GLenum)
+            }
             GL_MAX_TEXTURE_UNITS => int(MAX_TEXTURE_UNITS as GLint),
             GL_MAX_TEXTURE_SIZE => int(Target::Texture2D.max_size()),
             GL_MAX_3D_TEXTURE_SIZE => int(Target::Texture3D.max_size()),

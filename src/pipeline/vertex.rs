@@ -1,9 +1,11 @@
 //! Per-vertex transformation (§2.11) and lighting: object coordinates in, eye and clip
 //! coordinates, lit colors and the transformed texture coordinate out.
 
-use glam::{DMat3, DMat4, DVec3, Mat4, Vec3, Vec4};
+use glam::{DMat3, DMat4, DVec3, DVec4, Mat4, Vec3, Vec4};
 
 use crate::lighting::{LitVertex, PreparedLighting, VertexInput};
+use crate::state::texgen::{GenInput, PreparedTexGen};
+use crate::state::texture::MAX_TEXTURE_UNITS;
 
 /// The current vertex attributes (§2.7) that each glVertex copies.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -11,7 +13,10 @@ pub struct CurrentAttribs {
     pub color: Vec4,
     pub secondary_color: Vec4,
     pub normal: Vec3,
+    /// Texture unit 0's texture coordinates.
     pub tex_coord: Vec4,
+    /// Texture units 1 and up's (§2.7: glMultiTexCoord).
+    pub other_tex_coords: [Vec4; MAX_TEXTURE_UNITS - 1],
     pub edge_flag: bool,
     /// The current fog coordinate (§2.7): raster distance with GL_FOG_COORD as fog source.
     pub fog_coord: f32,
@@ -27,9 +32,27 @@ impl Default for CurrentAttribs {
             secondary_color: Vec4::W,
             normal: Vec3::Z,
             tex_coord: Vec4::W,
+            other_tex_coords: [Vec4::W; MAX_TEXTURE_UNITS - 1],
             edge_flag: true,
             fog_coord: 0.0,
             index: 1.0,
+        }
+    }
+}
+
+impl CurrentAttribs {
+    /// Texture unit `unit`'s current texture coordinates.
+    pub fn unit_tex_coord(&self, unit: usize) -> Vec4 {
+        match unit {
+            0 => self.tex_coord,
+            _ => self.other_tex_coords[unit - 1],
+        }
+    }
+
+    pub fn set_unit_tex_coord(&mut self, unit: usize, tex_coord: Vec4) {
+        match unit {
+            0 => self.tex_coord = tex_coord,
+            _ => self.other_tex_coords[unit - 1] = tex_coord,
         }
     }
 }
@@ -57,6 +80,8 @@ pub struct VertexTransform {
     /// GL_RESCALE_NORMAL's factor, when rescaling applies (enabled, GL_NORMALIZE off).
     pub normal_rescale: Option<f64>,
     pub normalize: bool,
+    /// Texture unit 0's coordinate generation, when a coordinate is generated.
+    pub tex_gen: Option<PreparedTexGen>,
 }
 
 impl VertexTransform {
@@ -66,6 +91,7 @@ impl VertexTransform {
         texture: Mat4,
         normalize: bool,
         rescale_normal: bool,
+        tex_gen: Option<PreparedTexGen>,
     ) -> VertexTransform {
         let modelview = modelview.as_dmat4();
         let inverse = DMat3::from_mat4(modelview).inverse();
@@ -85,7 +111,27 @@ impl VertexTransform {
             normal_matrix: inverse.transpose(),
             normal_rescale,
             normalize,
+            tex_gen,
         }
+    }
+
+    /// The texture coordinates of texture unit 0 (§2.11.4, §2.11.2): generated where
+    /// generation is enabled, then through the texture matrix. `eye` is the vertex's eye
+    /// coordinates, `normal` its normal as given.
+    #[inline(always)]
+    pub fn tex_coord(&self, object: Vec4, eye: DVec4, normal: Vec3, current: Vec4) -> Vec4 {
+        let coords = match &self.tex_gen {
+            None => current,
+            Some(tex_gen) => tex_gen.generate(
+                &GenInput {
+                    object: object.as_dvec4(),
+                    eye,
+                    normal: self.eye_normal(normal),
+                },
+                current,
+            ),
+        };
+        self.texture * coords
     }
 
     /// The eye-space normal (§2.11.3): transformed, then rescaled or normalized as enabled.
@@ -127,7 +173,7 @@ impl DerivedState {
             eye: eye.as_vec4(),
             clip: (transform.projection * eye).as_vec4(),
             colors,
-            tex_coord: transform.texture * attribs.tex_coord,
+            tex_coord: transform.tex_coord(object, eye, attribs.normal, attribs.tex_coord),
             edge_flag: attribs.edge_flag,
         }
     }

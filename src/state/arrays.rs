@@ -5,6 +5,7 @@
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use crate::state::convert::Component;
+use crate::state::texture::MAX_TEXTURE_UNITS;
 
 /// The arrays fflight draws from, in the order `VertexArrays` stores them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -230,7 +231,14 @@ pub struct ByteSpan {
 /// The vertex arrays of a context (table 6.8).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct VertexArrays {
+    /// The arrays draws read; the texture coordinate array is texture unit 0's.
     arrays: [ClientArray; ARRAY_KINDS],
+    /// Texture units 1 and up's texture coordinate arrays: kept and queried, not drawn (only
+    /// unit 0's coordinates reach feedback).
+    other_tex_coords: [ClientArray; MAX_TEXTURE_UNITS - 1],
+    /// GL_CLIENT_ACTIVE_TEXTURE - GL_TEXTURE0: the unit whose texture coordinate array
+    /// glTexCoordPointer, glEnableClientState and the array queries address (§2.8).
+    pub client_active_texture: usize,
     /// The buffer objects bound to GL_ARRAY_BUFFER (copied into each array whose pointer is
     /// set) and GL_ELEMENT_ARRAY_BUFFER (where glDrawElements finds its indices).
     pub array_buffer: u32,
@@ -250,6 +258,8 @@ impl Default for VertexArrays {
                 ClientArray::initial(1, GL_FLOAT),
                 ClientArray::initial(1, GL_FLOAT),
             ],
+            other_tex_coords: [ClientArray::initial(4, GL_FLOAT); MAX_TEXTURE_UNITS - 1],
+            client_active_texture: 0,
             array_buffer: 0,
             element_array_buffer: 0,
         }
@@ -257,8 +267,35 @@ impl Default for VertexArrays {
 }
 
 impl VertexArrays {
+    /// The array `kind` as the array commands and queries see it: for texture coordinates,
+    /// the client active texture unit's.
     pub fn get(&self, kind: ArrayKind) -> &ClientArray {
+        match (kind, self.client_active_texture) {
+            (ArrayKind::TexCoord, unit @ 1..) => &self.other_tex_coords[unit - 1],
+            _ => &self.arrays[kind as usize],
+        }
+    }
+
+    fn get_mut(&mut self, kind: ArrayKind) -> &mut ClientArray {
+        match (kind, self.client_active_texture) {
+            (ArrayKind::TexCoord, unit @ 1..) => &mut self.other_tex_coords[unit - 1],
+            _ => &mut self.arrays[kind as usize],
+        }
+    }
+
+    /// The array `kind` that draws read (texture unit 0's texture coordinates).
+    pub fn drawn(&self, kind: ArrayKind) -> &ClientArray {
         &self.arrays[kind as usize]
+    }
+
+    /// glClientActiveTexture (§2.8): GL_INVALID_ENUM unless `texture` is GL_TEXTUREi of a unit.
+    pub fn set_client_active_texture(&mut self, texture: GLenum) -> GlResult {
+        let unit = texture.wrapping_sub(GL_TEXTURE0) as usize;
+        if unit >= MAX_TEXTURE_UNITS {
+            return Err(GlError::InvalidEnum);
+        }
+        self.client_active_texture = unit;
+        Ok(())
     }
 
     /// glVertexPointer, glNormalPointer ...: Mesa's order of checks (stride, type, size).
@@ -279,19 +316,21 @@ impl VertexArrays {
         if !kind.accepts_size(size) {
             return Err(GlError::InvalidValue);
         }
-        let array = &mut self.arrays[kind as usize];
+        let buffer = self.array_buffer;
+        let array = self.get_mut(kind);
         array.size = size;
         array.component_type = component_type;
         array.stride = stride;
         array.address = address;
-        array.buffer = self.array_buffer;
+        array.buffer = buffer;
         Ok(())
     }
 
     /// Every binding to buffer object `name` returns to 0 (it was deleted): GL_ARRAY_BUFFER,
     /// GL_ELEMENT_ARRAY_BUFFER, and the arrays sourced from it go back to client memory.
     pub fn reset_bindings(&mut self, name: u32) {
-        let arrays = self.arrays.iter_mut().map(|array| &mut array.buffer);
+        let arrays = (self.arrays.iter_mut().chain(&mut self.other_tex_coords))
+            .map(|array| &mut array.buffer);
         for binding in arrays.chain([&mut self.array_buffer, &mut self.element_array_buffer]) {
             if *binding == name {
                 *binding = 0;
@@ -302,7 +341,7 @@ impl VertexArrays {
     /// glEnableClientState / glDisableClientState.
     pub fn set_enabled(&mut self, array: GLenum, enabled: bool) -> GlResult {
         match ArrayKind::of_client_state(array) {
-            Some(kind) => self.arrays[kind as usize].enabled = enabled,
+            Some(kind) => self.get_mut(kind).enabled = enabled,
             None => return Err(GlError::InvalidEnum),
         }
         Ok(())
@@ -378,15 +417,16 @@ impl VertexArrays {
             (ArrayKind::Normal, layout.normal),
             (ArrayKind::Vertex, Some(layout.vertex)),
         ];
+        let buffer = self.array_buffer;
         for (kind, part) in parts {
-            let array = &mut self.arrays[kind as usize];
+            let array = self.get_mut(kind);
             array.enabled = part.is_some();
             if let Some((size, component_type, offset)) = part {
                 array.size = size;
                 array.component_type = component_type;
                 array.stride = stride;
                 array.address = at(offset);
-                array.buffer = self.array_buffer;
+                array.buffer = buffer;
             }
         }
         Ok(())

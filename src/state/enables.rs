@@ -7,7 +7,7 @@ use crate::gl::*;
 pub const MAX_CLIP_PLANES: usize = 6;
 
 // GL 1.5 capabilities fflight accepts and reports but whose state it does not implement yet
-// (evaluators, texture coordinate generation): glEnable stores them so glIsEnabled answers. The rasterization and
+// (evaluators): glEnable stores them so glIsEnabled answers. The rasterization and
 // per-fragment capabilities live in their attribute groups (see `Context::group_flag`).
 
 /// The evaluators' capability fflight has (GL_EVAL_BIT's; the maps' enables are not accepted).
@@ -29,7 +29,7 @@ pub struct Enables {
     pub rescale_normal: bool,
     pub cull_face: bool,
     pub clip_planes: [bool; MAX_CLIP_PLANES],
-    /// EVAL_CAPABILITIES and TEXTURE_CAPABILITIES that are enabled (all start disabled).
+    /// EVAL_CAPABILITIES that are enabled (all start disabled).
     other: Vec<GLenum>,
 }
 
@@ -43,6 +43,8 @@ pub enum Capability {
     ColorMaterial,
     CullFace,
     ClipPlane(usize),
+    /// GL_TEXTURE_GEN_S to _Q of the active texture unit.
+    TexGen(usize),
     Other(GLenum),
 }
 
@@ -58,9 +60,10 @@ impl Capability {
             GL_CLIP_PLANE0..=GL_CLIP_PLANE5 => {
                 Capability::ClipPlane((cap - GL_CLIP_PLANE0) as usize)
             }
-            _ if EVAL_CAPABILITIES.contains(&cap) || TEXTURE_CAPABILITIES.contains(&cap) => {
-                Capability::Other(cap)
+            GL_TEXTURE_GEN_S..=GL_TEXTURE_GEN_Q => {
+                Capability::TexGen((cap - GL_TEXTURE_GEN_S) as usize)
             }
+            _ if EVAL_CAPABILITIES.contains(&cap) => Capability::Other(cap),
             _ => return Err(GlError::InvalidEnum),
         })
     }

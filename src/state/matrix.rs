@@ -1,9 +1,10 @@
-//! Matrix stacks (§2.11.2): modelview, projection and texture.
+//! Matrix stacks (§2.11.2): modelview, projection and each texture unit's texture matrix.
 
 use glam::{DMat4, DVec3, Mat4};
 
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
+use crate::state::texture::MAX_TEXTURE_UNITS;
 
 pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
 pub const MAX_PROJECTION_STACK_DEPTH: usize = 32;
@@ -58,13 +59,13 @@ impl MatrixStack {
     }
 }
 
-/// The three stacks and glMatrixMode.
+/// The stacks and glMatrixMode: a texture matrix stack for each texture unit (§2.11.2).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Matrices {
     pub mode: GLenum,
     pub modelview: MatrixStack,
     pub projection: MatrixStack,
-    pub texture: MatrixStack,
+    pub texture: [MatrixStack; MAX_TEXTURE_UNITS],
 }
 
 impl Default for Matrices {
@@ -73,25 +74,26 @@ impl Default for Matrices {
             mode: GL_MODELVIEW,
             modelview: MatrixStack::new(MAX_MODELVIEW_STACK_DEPTH),
             projection: MatrixStack::new(MAX_PROJECTION_STACK_DEPTH),
-            texture: MatrixStack::new(MAX_TEXTURE_STACK_DEPTH),
+            texture: std::array::from_fn(|_| MatrixStack::new(MAX_TEXTURE_STACK_DEPTH)),
         }
     }
 }
 
 impl Matrices {
-    pub fn stack(&self, mode: GLenum) -> &MatrixStack {
+    /// The stack of `mode`; GL_TEXTURE's is texture unit `unit`'s.
+    pub fn stack(&self, mode: GLenum, unit: usize) -> &MatrixStack {
         match mode {
             GL_PROJECTION => &self.projection,
-            GL_TEXTURE => &self.texture,
+            GL_TEXTURE => &self.texture[unit],
             _ => &self.modelview,
         }
     }
 
-    /// The stack glMatrixMode selects.
-    pub fn current_mut(&mut self) -> &mut MatrixStack {
+    /// The stack glMatrixMode selects (the active texture unit `unit`'s for GL_TEXTURE).
+    pub fn current_mut(&mut self, unit: usize) -> &mut MatrixStack {
         match self.mode {
             GL_PROJECTION => &mut self.projection,
-            GL_TEXTURE => &mut self.texture,
+            GL_TEXTURE => &mut self.texture[unit],
             _ => &mut self.modelview,
         }
     }

@@ -16,5 +16,6 @@ pub mod pixel;
 pub mod queries;
 pub mod raster;
 pub mod rasterization;
+pub mod texgen;
 pub mod texture;
 pub mod texture_image;

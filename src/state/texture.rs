@@ -464,8 +464,8 @@ impl TexEnv {
 
 /// The state of one texture unit that is not in the texture objects (GL_TEXTURE_BIT, the
 /// enables GL_ENABLE_BIT too): which targets are enabled, the object bound to each target,
-/// and the environment. The texture coordinate sets, the texture matrix and texture
-/// generation are not kept per unit yet.
+/// the environment and texture coordinate generation. (The unit's current texture
+/// coordinates are in `CurrentAttribs`, its texture matrix stack in `Matrices`.)
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct TextureUnit {
     /// GL_TEXTURE_1D, _2D, _3D, _CUBE_MAP, in `Target` order.
@@ -473,6 +473,7 @@ pub struct TextureUnit {
     /// The names bound, in `Target` order; 0 is the target's default object.
     pub bindings: [GLuint; 4],
     pub env: TexEnv,
+    pub tex_gen: crate::state::texgen::TexGen,
 }
 
 /// One texture object: its target (fixed by the first bind), parameters and images.
@@ -608,6 +609,9 @@ impl Textures {
     }
 }
 
+/// A unit's target enables and coordinate generation enables.
+pub type UnitEnables = ([bool; 4], [bool; 4]);
+
 /// GL_TEXTURE_BIT's texture state (tables 6.16-6.20): the active unit, each unit's enables,
 /// bindings and environment, and the parameters of every object bound to a unit.
 #[derive(Clone, Debug, PartialEq)]
@@ -660,14 +664,20 @@ impl Textures {
         }
     }
 
-    /// Every unit's texture target enables (GL_ENABLE_BIT saves all units').
-    pub fn enables(&self) -> [[bool; 4]; MAX_TEXTURE_UNITS] {
-        self.units.each_ref().map(|unit| unit.enabled)
+    /// Every unit's texture target and coordinate generation enables (GL_ENABLE_BIT saves
+    /// all units').
+    pub fn enables(&self) -> [UnitEnables; MAX_TEXTURE_UNITS] {
+        self.units
+            .each_ref()
+            .map(|unit| (unit.enabled, unit.tex_gen.coords.map(|c| c.enabled)))
     }
 
-    pub fn restore_enables(&mut self, enables: [[bool; 4]; MAX_TEXTURE_UNITS]) {
-        for (unit, enabled) in self.units.iter_mut().zip(enables) {
-            unit.enabled = enabled;
+    pub fn restore_enables(&mut self, enables: [UnitEnables; MAX_TEXTURE_UNITS]) {
+        for (unit, (targets, generation)) in self.units.iter_mut().zip(enables) {
+            unit.enabled = targets;
+            for (coord, enabled) in unit.tex_gen.coords.iter_mut().zip(generation) {
+                coord.enabled = enabled;
+            }
         }
     }
 }

@@ -349,7 +349,7 @@ fn element(bytes: &[u8], at: usize, size: usize, swap: bool) -> u32 {
     }
 }
 
-fn write_element(bytes: &mut [u8], at: usize, size: usize, swap: bool, value: u32) {
+pub(crate) fn write_element(bytes: &mut [u8], at: usize, size: usize, swap: bool, value: u32) {
     let mut raw = [0u8; 4];
     match size {
         1 => raw[0] = value as u8,
