@@ -251,10 +251,16 @@ fn write_entry_point(out: &mut String, entry: &EntryPoint) {
             Some(Pointer::Fill(count)) => ("read_mut", count),
             _ => continue,
         };
+        // Untyped memory is read and written as bytes.
+        let cast = if p.rust_type.ends_with("c_void") {
+            ".cast::<u8>()"
+        } else {
+            ""
+        };
         let _ = writeln!(
             out,
             "        // SAFETY: the caller's guarantee, forwarded.\n        \
-             let {name} = unsafe {{ {function}({name}, {count}) }};",
+             let {name} = unsafe {{ {function}({name}{cast}, {count}) }};",
             name = p.name
         );
     }
@@ -352,10 +358,15 @@ fn braced(fields: &[String]) -> String {
 }
 
 /// The type a pointer type points to (`*const GLfloat` -> `GLfloat`).
+/// The values a pointer parameter points to: bytes for `void *`.
 fn pointee(rust_type: &str) -> &str {
-    rust_type
+    match rust_type
         .trim_start_matches("*const ")
         .trim_start_matches("*mut ")
+    {
+        "c_void" => "u8",
+        pointee => pointee,
+    }
 }
 
 /// The Rust source for the table `table`, or the first line it cannot read.

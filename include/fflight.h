@@ -4533,6 +4533,29 @@ void glMultiTexCoord4d(GLenum target, GLdouble s, GLdouble t, GLdouble r, GLdoub
 void glMultiTexCoord4dv(GLenum target, const GLdouble *v);
 
 /*
+ The pixels are not read: there is no framebuffer to draw them into.
+
+ # Safety
+ `_pixels` is NULL or points to the values the command reads.
+ */
+void glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum ty, const void *_pixels);
+
+/*
+ fflight's framebuffer holds nothing drawn: every pixel reads as color (0, 0, 0, 0), depth
+ 0 and stencil 0 after pixel transfer, packed with the GL_PACK_* modes.
+
+ # Safety
+ `pixels` is NULL or has room for the values the command writes.
+ */
+void glReadPixels(GLint _x,
+                  GLint _y,
+                  GLsizei width,
+                  GLsizei height,
+                  GLenum format,
+                  GLenum ty,
+                  void *pixels);
+
+/*
  # Safety
  `params` is NULL or has room for the values `pname` defines.
  */

@@ -874,6 +874,7 @@ c_programs!(
     osmesa_diff_texture_matrix,
     texgen_osmesa_diff_modes,
     multitexture_state,
+    draw_read_pixels,
     raster_pos,
     osmesa_diff_raster_pos_lighting,
     system_gl_header,

@@ -4,6 +4,7 @@
 //! this file and the header; tests/header.rs fails when either is stale.
 
 use super::{read, read_mut, with_context, write};
+use std::ffi::c_void;
 use crate::gl::*;
 use crate::context::Context;
 use crate::error::GlResult;
@@ -2766,6 +2767,36 @@ pub unsafe extern "C" fn glMultiTexCoord4dv(target: GLenum, v: *const GLdouble) 
     })
 }
 
+/// The pixels are not read: there is no framebuffer to draw them into.
+///
+/// # Safety
+/// `_pixels` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glDrawPixels(width: GLsizei, height: GLsizei, format: GLenum, ty: GLenum, _pixels: *const c_void) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let _pixels = unsafe { read(_pixels.cast::<u8>(), 0) };
+        if ctx.record(|| TableCommand::glDrawPixels { width, height, format, ty, _pixels: _pixels.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.draw_pixels(width, height, format, ty)
+    })
+}
+
+/// fflight's framebuffer holds nothing drawn: every pixel reads as color (0, 0, 0, 0), depth
+/// 0 and stencil 0 after pixel transfer, packed with the GL_PACK_* modes.
+///
+/// # Safety
+/// `pixels` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glReadPixels(_x: GLint, _y: GLint, width: GLsizei, height: GLsizei, format: GLenum, ty: GLenum, pixels: *mut c_void) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let pixels = unsafe { read_mut(pixels.cast::<u8>(), ctx.read_pixels_span(width, height, format, ty)) };
+        ctx.read_pixels([width, height], format, ty, pixels)
+    })
+}
+
 /// A command of the table compiled into a display list: its parameters, and a copy of the
 /// values its pointers gave at compile time.
 #[allow(non_camel_case_types)]
@@ -2979,6 +3010,7 @@ pub enum TableCommand {
     glMultiTexCoord4fv { target: GLenum, v: Vec<GLfloat> },
     glMultiTexCoord4d { target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble },
     glMultiTexCoord4dv { target: GLenum, v: Vec<GLdouble> },
+    glDrawPixels { width: GLsizei, height: GLsizei, format: GLenum, ty: GLenum, _pixels: Vec<u8> },
 }
 
 impl TableCommand {
@@ -4081,6 +4113,14 @@ impl TableCommand {
                 let target = *target;
                 let v = &v[..];
                 ctx.multi_tex_coord_v::<_, 4>(target, v)
+            }
+            TableCommand::glDrawPixels { width, height, format, ty, _pixels } => {
+                let width = *width;
+                let height = *height;
+                let format = *format;
+                let ty = *ty;
+                let _pixels = &_pixels[..];
+                ctx.draw_pixels(width, height, format, ty)
             }
         }
     }

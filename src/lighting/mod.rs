@@ -164,7 +164,7 @@ pub(crate) fn power(base: f64, exponent: f64) -> f64 {
 }
 
 /// A homogeneous eye-space point as a 3D point (§2.14.1 treats V as homogeneous).
-fn homogenize(eye: DVec4) -> DVec3 {
+pub(crate) fn homogenize(eye: DVec4) -> DVec3 {
     if eye.w != 0.0 && eye.w != 1.0 {
         eye.truncate() / eye.w
     } else {

@@ -5,6 +5,7 @@ use glam::{DMat4, DVec3, DVec4, Vec4};
 
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
+use crate::lighting::homogenize;
 
 /// One coordinate's generation state.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -170,7 +171,7 @@ impl PreparedTexGen {
         let mut reflect = || {
             *reflection.get_or_insert_with(|| {
                 // u: the unit vector from the eye to the vertex; r = u - 2 n (n . u).
-                let u = homogenized(input.eye).normalize_or_zero();
+                let u = homogenize(input.eye).normalize_or_zero();
                 let n = input.normal;
                 u - 2.0 * n * n.dot(u)
             })
@@ -194,15 +195,6 @@ impl PreparedTexGen {
             out[k] = value as f32;
         }
         Vec4::from_array(out)
-    }
-}
-
-/// The eye-space point of homogeneous eye coordinates (w = 0 taken as a direction).
-fn homogenized(eye: DVec4) -> DVec3 {
-    if eye.w != 0.0 && eye.w != 1.0 {
-        eye.truncate() / eye.w
-    } else {
-        eye.truncate()
     }
 }
 
