@@ -3,7 +3,7 @@
 
 CARGO ?= cargo
 CC ?= cc
-PACKAGES := libosmesa6-dev pkg-config gcc make python3
+PACKAGES := libosmesa6-dev libglu1-mesa-dev pkg-config gcc make python3
 CFLAGS_STRICT := -std=c99 -Wall -Wextra -Werror -pedantic
 LIB := target/debug/libfflight.a
 DEMO_DIR := target/demo

@@ -480,6 +480,42 @@ static inline int ffl_fb_finish(ffl_fb *fb, const char *tag, ffl_vertex_note not
                                     user, &fb->counts);
 }
 
+/* Prints a feedback buffer of points, line segments and polygons (no pass-through
+ * markers) like ffl_print_feedback, but every segment as "segment" whether its token is
+ * GL_LINE_TOKEN or GL_LINE_RESET_TOKEN: for line primitives drawn by code that is not the
+ * test's (libGLU's), where the stipple resets cannot be marked and OSMesa never feeds back
+ * GL_LINE_RESET_TOKEN (docs/osmesa-differences.md, 1). */
+static inline void ffl_print_feedback_segments(const char *tag, const GLfloat *buf, GLint n,
+                                               GLenum type)
+{
+    GLint i = 0;
+    int vs = ffl_feedback_vertex_size(type), k, count;
+    printf("%s count %d\n", tag, (int)n);
+    while (i < n) {
+        GLenum token = (GLenum)buf[i++];
+        const char *name;
+        if (token == GL_POINT_TOKEN) {
+            name = "point";
+            count = 1;
+        } else if (token == GL_LINE_TOKEN || token == GL_LINE_RESET_TOKEN) {
+            name = "segment";
+            count = 2;
+        } else if (token == GL_POLYGON_TOKEN && i < n) {
+            name = "polygon";
+            count = (int)buf[i++];
+        } else {
+            printf("%s unexpected token\n", tag);
+            return;
+        }
+        printf("%s %s %d\n", tag, name, count);
+        for (k = 0; k < count && i + vs <= n; k++, i += vs) {
+            printf("%s  v", tag);
+            ffl_print_feedback_vertex(buf + i, type);
+            printf("\n");
+        }
+    }
+}
+
 /* ---- selection ------------------------------------------------------------ */
 
 /* Prints the hit records of a selection pass that returned `hits` (glRenderMode's

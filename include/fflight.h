@@ -28,6 +28,14 @@ typedef float GLclampf;
 typedef double GLdouble;
 typedef double GLclampd;
 #endif
+/* OpenGL ES 1.1's fixed-point types, unless <GLES/gl.h> or <GL/glext.h> (its
+   GL_OES_fixed_point) came first. */
+#if !defined(__gles1_gl_h_) && !defined(GL_OES_fixed_point)
+typedef int GLfixed;
+#endif
+#ifndef __gles1_gl_h_
+typedef int GLclampx;
+#endif
 #ifndef GL_VERSION_1_5
 #include <stddef.h>
 typedef ptrdiff_t GLsizeiptr;
@@ -2823,6 +2831,110 @@ typedef struct FflCapturedPrimitive {
 #define GL_CLIENT_ACTIVE_TEXTURE 34017
 #endif
 
+#ifndef GL_MAP1_COLOR_4
+#define GL_MAP1_COLOR_4 3472
+#endif
+
+#ifndef GL_MAP1_INDEX
+#define GL_MAP1_INDEX 3473
+#endif
+
+#ifndef GL_MAP1_NORMAL
+#define GL_MAP1_NORMAL 3474
+#endif
+
+#ifndef GL_MAP1_TEXTURE_COORD_1
+#define GL_MAP1_TEXTURE_COORD_1 3475
+#endif
+
+#ifndef GL_MAP1_TEXTURE_COORD_2
+#define GL_MAP1_TEXTURE_COORD_2 3476
+#endif
+
+#ifndef GL_MAP1_TEXTURE_COORD_3
+#define GL_MAP1_TEXTURE_COORD_3 3477
+#endif
+
+#ifndef GL_MAP1_TEXTURE_COORD_4
+#define GL_MAP1_TEXTURE_COORD_4 3478
+#endif
+
+#ifndef GL_MAP1_VERTEX_3
+#define GL_MAP1_VERTEX_3 3479
+#endif
+
+#ifndef GL_MAP1_VERTEX_4
+#define GL_MAP1_VERTEX_4 3480
+#endif
+
+#ifndef GL_MAP2_COLOR_4
+#define GL_MAP2_COLOR_4 3504
+#endif
+
+#ifndef GL_MAP2_INDEX
+#define GL_MAP2_INDEX 3505
+#endif
+
+#ifndef GL_MAP2_NORMAL
+#define GL_MAP2_NORMAL 3506
+#endif
+
+#ifndef GL_MAP2_TEXTURE_COORD_1
+#define GL_MAP2_TEXTURE_COORD_1 3507
+#endif
+
+#ifndef GL_MAP2_TEXTURE_COORD_2
+#define GL_MAP2_TEXTURE_COORD_2 3508
+#endif
+
+#ifndef GL_MAP2_TEXTURE_COORD_3
+#define GL_MAP2_TEXTURE_COORD_3 3509
+#endif
+
+#ifndef GL_MAP2_TEXTURE_COORD_4
+#define GL_MAP2_TEXTURE_COORD_4 3510
+#endif
+
+#ifndef GL_MAP2_VERTEX_3
+#define GL_MAP2_VERTEX_3 3511
+#endif
+
+#ifndef GL_MAP2_VERTEX_4
+#define GL_MAP2_VERTEX_4 3512
+#endif
+
+#ifndef GL_MAP1_GRID_DOMAIN
+#define GL_MAP1_GRID_DOMAIN 3536
+#endif
+
+#ifndef GL_MAP1_GRID_SEGMENTS
+#define GL_MAP1_GRID_SEGMENTS 3537
+#endif
+
+#ifndef GL_MAP2_GRID_DOMAIN
+#define GL_MAP2_GRID_DOMAIN 3538
+#endif
+
+#ifndef GL_MAP2_GRID_SEGMENTS
+#define GL_MAP2_GRID_SEGMENTS 3539
+#endif
+
+#ifndef GL_MAX_EVAL_ORDER
+#define GL_MAX_EVAL_ORDER 3376
+#endif
+
+#ifndef GL_COEFF
+#define GL_COEFF 2560
+#endif
+
+#ifndef GL_ORDER
+#define GL_ORDER 2561
+#endif
+
+#ifndef GL_DOMAIN
+#define GL_DOMAIN 2562
+#endif
+
 
 
 
@@ -4554,6 +4666,298 @@ void glReadPixels(GLint _x,
                   GLenum format,
                   GLenum ty,
                   void *pixels);
+
+/*
+ # Safety
+ `points` is NULL or points to the values the command reads.
+ */
+void glMap1f(GLenum target,
+             GLfloat u1,
+             GLfloat u2,
+             GLint stride,
+             GLint order,
+             const GLfloat *points);
+
+/*
+ # Safety
+ `points` is NULL or points to the values the command reads.
+ */
+void glMap2f(GLenum target,
+             GLfloat u1,
+             GLfloat u2,
+             GLint ustride,
+             GLint uorder,
+             GLfloat v1,
+             GLfloat v2,
+             GLint vstride,
+             GLint vorder,
+             const GLfloat *points);
+
+/*
+ # Safety
+ `points` is NULL or points to the values the command reads.
+ */
+void glMap1d(GLenum target,
+             GLdouble u1,
+             GLdouble u2,
+             GLint stride,
+             GLint order,
+             const GLdouble *points);
+
+/*
+ # Safety
+ `points` is NULL or points to the values the command reads.
+ */
+void glMap2d(GLenum target,
+             GLdouble u1,
+             GLdouble u2,
+             GLint ustride,
+             GLint uorder,
+             GLdouble v1,
+             GLdouble v2,
+             GLint vstride,
+             GLint vorder,
+             const GLdouble *points);
+
+/*
+ # Safety
+ `v` is NULL or has room for the values the command writes.
+ */
+void glGetMapfv(GLenum target, GLenum query, GLfloat *v);
+
+/*
+ # Safety
+ `v` is NULL or has room for the values the command writes.
+ */
+void glGetMapdv(GLenum target, GLenum query, GLdouble *v);
+
+/*
+ # Safety
+ `v` is NULL or has room for the values the command writes.
+ */
+void glGetMapiv(GLenum target, GLenum query, GLint *v);
+
+void glMapGrid1f(GLint un, GLfloat u1, GLfloat u2);
+
+void glMapGrid2f(GLint un, GLfloat u1, GLfloat u2, GLint vn, GLfloat v1, GLfloat v2);
+
+void glMapGrid1d(GLint un, GLdouble u1, GLdouble u2);
+
+void glMapGrid2d(GLint un, GLdouble u1, GLdouble u2, GLint vn, GLdouble v1, GLdouble v2);
+
+void glEvalCoord1f(GLfloat u);
+
+/*
+ # Safety
+ `u` is NULL or points to the values the command reads.
+ */
+void glEvalCoord1fv(const GLfloat *u);
+
+void glEvalCoord2f(GLfloat u, GLfloat v);
+
+/*
+ # Safety
+ `u` is NULL or points to the values the command reads.
+ */
+void glEvalCoord2fv(const GLfloat *u);
+
+void glEvalCoord1d(GLdouble u);
+
+/*
+ # Safety
+ `u` is NULL or points to the values the command reads.
+ */
+void glEvalCoord1dv(const GLdouble *u);
+
+void glEvalCoord2d(GLdouble u, GLdouble v);
+
+/*
+ # Safety
+ `u` is NULL or points to the values the command reads.
+ */
+void glEvalCoord2dv(const GLdouble *u);
+
+void glEvalPoint1(GLint i);
+
+void glEvalPoint2(GLint i, GLint j);
+
+void glEvalMesh1(GLenum mode, GLint i1, GLint i2);
+
+void glEvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2);
+
+void glLightx(GLenum light, GLenum pname, GLfixed param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glLightxv(GLenum light, GLenum pname, const GLfixed *params);
+
+void glMaterialx(GLenum face, GLenum pname, GLfixed param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glMaterialxv(GLenum face, GLenum pname, const GLfixed *params);
+
+void glLightModelx(GLenum pname, GLfixed param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glLightModelxv(GLenum pname, const GLfixed *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetLightxv(GLenum light, GLenum pname, GLfixed *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetMaterialxv(GLenum face, GLenum pname, GLfixed *params);
+
+void glNormal3x(GLfixed nx, GLfixed ny, GLfixed nz);
+
+void glColor4x(GLfixed red, GLfixed green, GLfixed blue, GLfixed alpha);
+
+void glMultiTexCoord4x(GLenum target, GLfixed s, GLfixed t, GLfixed r, GLfixed q);
+
+void glTranslatex(GLfixed x, GLfixed y, GLfixed z);
+
+void glRotatex(GLfixed angle, GLfixed x, GLfixed y, GLfixed z);
+
+void glScalex(GLfixed x, GLfixed y, GLfixed z);
+
+/*
+ # Safety
+ `m` is NULL or points to the values the command reads.
+ */
+void glLoadMatrixx(const GLfixed *m);
+
+/*
+ # Safety
+ `m` is NULL or points to the values the command reads.
+ */
+void glMultMatrixx(const GLfixed *m);
+
+void glOrthox(GLfixed left, GLfixed right, GLfixed bottom, GLfixed top, GLfixed near, GLfixed far);
+
+void glFrustumx(GLfixed left,
+                GLfixed right,
+                GLfixed bottom,
+                GLfixed top,
+                GLfixed near,
+                GLfixed far);
+
+void glOrthof(GLfloat left, GLfloat right, GLfloat bottom, GLfloat top, GLfloat near, GLfloat far);
+
+void glFrustumf(GLfloat left,
+                GLfloat right,
+                GLfloat bottom,
+                GLfloat top,
+                GLfloat near,
+                GLfloat far);
+
+/*
+ # Safety
+ `equation` is NULL or points to the values the command reads.
+ */
+void glClipPlanex(GLenum plane, const GLfixed *equation);
+
+/*
+ # Safety
+ `equation` is NULL or points to the values the command reads.
+ */
+void glClipPlanef(GLenum plane, const GLfloat *equation);
+
+/*
+ # Safety
+ `equation` is NULL or has room for the values the command writes.
+ */
+void glGetClipPlanex(GLenum plane, GLfixed *equation);
+
+/*
+ # Safety
+ `equation` is NULL or has room for the values the command writes.
+ */
+void glGetClipPlanef(GLenum plane, GLfloat *equation);
+
+/*
+ OpenGL ES 1.1's query of any glGet state as 16.16 fixed point.
+
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetFixedv(GLenum pname, GLfixed *params);
+
+void glPointSizex(GLfixed size);
+
+void glPointParameterx(GLenum pname, GLfixed param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glPointParameterxv(GLenum pname, const GLfixed *params);
+
+void glLineWidthx(GLfixed width);
+
+void glFogx(GLenum pname, GLfixed param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glFogxv(GLenum pname, const GLfixed *params);
+
+void glTexEnvx(GLenum target, GLenum pname, GLfixed param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glTexEnvxv(GLenum target, GLenum pname, const GLfixed *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetTexEnvxv(GLenum target, GLenum pname, GLfixed *params);
+
+void glTexParameterx(GLenum target, GLenum pname, GLfixed param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glTexParameterxv(GLenum target, GLenum pname, const GLfixed *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetTexParameterxv(GLenum target, GLenum pname, GLfixed *params);
+
+void glClearColorx(GLclampx red, GLclampx green, GLclampx blue, GLclampx alpha);
+
+void glClearDepthx(GLclampx depth);
+
+void glClearDepthf(GLclampf depth);
+
+void glDepthRangex(GLclampx near, GLclampx far);
+
+void glDepthRangef(GLclampf near, GLclampf far);
+
+void glAlphaFuncx(GLenum func, GLclampx reference);
+
+void glPolygonOffsetx(GLfixed factor, GLfixed units);
+
+void glSampleCoveragex(GLclampx value, GLboolean invert);
 
 /*
  # Safety

@@ -100,6 +100,10 @@ pub struct Context {
     derived: Option<Arc<DerivedState>>,
     pub(crate) vertex_cache: crate::pipeline::vertex_cache::VertexCache,
     pub(crate) lists: crate::commands::list::DisplayLists,
+    /// The evaluator maps (§5.1), in no attribute group.
+    pub(crate) maps: crate::state::eval::Maps,
+    /// The evaluator enables and grids (GL_EVAL_BIT).
+    pub(crate) eval: crate::state::eval::EvalAttribs,
 }
 
 impl Default for Context {
@@ -153,6 +157,8 @@ impl Context {
             derived: None,
             vertex_cache: Default::default(),
             lists: Default::default(),
+            maps: Default::default(),
+            eval: Default::default(),
         }
     }
 

@@ -714,3 +714,35 @@ pub const GL_SPHERE_MAP: GLenum = 0x2402;
 pub const GL_NORMAL_MAP: GLenum = 0x8511;
 pub const GL_REFLECTION_MAP: GLenum = 0x8512;
 pub const GL_CLIENT_ACTIVE_TEXTURE: GLenum = 0x84E1;
+
+// Evaluators (§5.1).
+pub const GL_MAP1_COLOR_4: GLenum = 0x0D90;
+pub const GL_MAP1_INDEX: GLenum = 0x0D91;
+pub const GL_MAP1_NORMAL: GLenum = 0x0D92;
+pub const GL_MAP1_TEXTURE_COORD_1: GLenum = 0x0D93;
+pub const GL_MAP1_TEXTURE_COORD_2: GLenum = 0x0D94;
+pub const GL_MAP1_TEXTURE_COORD_3: GLenum = 0x0D95;
+pub const GL_MAP1_TEXTURE_COORD_4: GLenum = 0x0D96;
+pub const GL_MAP1_VERTEX_3: GLenum = 0x0D97;
+pub const GL_MAP1_VERTEX_4: GLenum = 0x0D98;
+pub const GL_MAP2_COLOR_4: GLenum = 0x0DB0;
+pub const GL_MAP2_INDEX: GLenum = 0x0DB1;
+pub const GL_MAP2_NORMAL: GLenum = 0x0DB2;
+pub const GL_MAP2_TEXTURE_COORD_1: GLenum = 0x0DB3;
+pub const GL_MAP2_TEXTURE_COORD_2: GLenum = 0x0DB4;
+pub const GL_MAP2_TEXTURE_COORD_3: GLenum = 0x0DB5;
+pub const GL_MAP2_TEXTURE_COORD_4: GLenum = 0x0DB6;
+pub const GL_MAP2_VERTEX_3: GLenum = 0x0DB7;
+pub const GL_MAP2_VERTEX_4: GLenum = 0x0DB8;
+pub const GL_MAP1_GRID_DOMAIN: GLenum = 0x0DD0;
+pub const GL_MAP1_GRID_SEGMENTS: GLenum = 0x0DD1;
+pub const GL_MAP2_GRID_DOMAIN: GLenum = 0x0DD2;
+pub const GL_MAP2_GRID_SEGMENTS: GLenum = 0x0DD3;
+pub const GL_MAX_EVAL_ORDER: GLenum = 0x0D30;
+pub const GL_COEFF: GLenum = 0x0A00;
+pub const GL_ORDER: GLenum = 0x0A01;
+pub const GL_DOMAIN: GLenum = 0x0A02;
+
+// OpenGL ES 1.1's fixed-point types (16.16).
+pub type GLfixed = c_int;
+pub type GLclampx = c_int;

@@ -205,6 +205,19 @@ fn items() -> Vec<Item> {
         server(GL_MULTISAMPLE_BIT | GL_ENABLE_BIT),
     );
     gets(&[GL_AUTO_NORMAL], server(GL_EVAL_BIT | GL_ENABLE_BIT));
+    let maps: Vec<GLenum> = (GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4)
+        .chain(GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4)
+        .collect();
+    gets(&maps, server(GL_EVAL_BIT | GL_ENABLE_BIT));
+    gets(
+        &[
+            GL_MAP1_GRID_DOMAIN,
+            GL_MAP1_GRID_SEGMENTS,
+            GL_MAP2_GRID_DOMAIN,
+            GL_MAP2_GRID_SEGMENTS,
+        ],
+        server(GL_EVAL_BIT),
+    );
     gets(&[GL_MODELVIEW_MATRIX, GL_PROJECTION_MATRIX], Bits::None);
     gets(&PIXEL_STORE_PNAMES, Bits::Client(GL_CLIENT_PIXEL_STORE_BIT));
     gets(&ARRAY_PNAMES, Bits::Client(GL_CLIENT_VERTEX_ARRAY_BIT));
@@ -464,6 +477,10 @@ fn set_everything(ctx: &mut Context, k: u32) {
     ctx.fog_coord(f);
     ctx.index(2.0 * f);
     ctx.list_base(10 * k).unwrap();
+    ctx.map_grid(1, [k as i32, 1], [f as f64, 3.0, 0.0, 1.0])
+        .unwrap();
+    ctx.map_grid(2, [k as i32, 2 * k as i32], [0.0, f as f64, -1.0, f as f64])
+        .unwrap();
     // Textures: objects bound on every unit (new names in each setting), their parameters,
     // each unit's environment and enables, then the active unit.
     let mut names = [0; 4 * MAX_TEXTURE_UNITS];

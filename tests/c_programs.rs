@@ -322,24 +322,43 @@ const CFLAGS: &[&str] = &[
     "-g",
 ];
 
+/// The libraries a program's header comment asks for on a line `ffl-libs: -lGLU ...`: client
+/// libraries that draw through the GL (libGLU). The fflight build links them before
+/// libfflight.a and exports the GL entry points dynamically (`-rdynamic`), so the
+/// libraries' GL calls resolve to fflight's at run time, not to another GL also loaded.
+fn client_libraries(source: &Path) -> Vec<String> {
+    let text = std::fs::read_to_string(source).unwrap_or_default();
+    // The comments before the first #include.
+    let header = text.split("#include").next().unwrap_or("");
+    header
+        .lines()
+        .filter_map(|line| line.split("ffl-libs:").nth(1))
+        .flat_map(|libs| libs.split_whitespace().map(str::to_string))
+        .collect()
+}
+
 fn compile(name: &str, build: Build) -> PathBuf {
     let root = manifest_dir();
     let source = root.join("c_tests").join(format!("{name}.c"));
+    let libraries = client_libraries(&source);
     let exe = out_dir().join(format!("{name}.{}", build.name()));
     let mut cmd = Command::new(std::env::var("CC").unwrap_or_else(|_| "gcc".into()));
     cmd.args(CFLAGS).arg("-I").arg(root.join("c_tests"));
     match build {
         Build::Fflight => {
-            cmd.arg("-I")
-                .arg(root.join("include"))
-                .arg(&source)
-                .arg(static_library())
-                .args(["-lm", "-lpthread", "-ldl"]);
+            cmd.arg("-I").arg(root.join("include")).arg(&source);
+            if !libraries.is_empty() {
+                cmd.args(&libraries).arg("-rdynamic");
+            }
+            cmd.arg(static_library()).args(["-lm", "-lpthread", "-ldl"]);
         }
         Build::Osmesa => {
+            // OSMesa before the client libraries: theirs is the GL they find first.
             cmd.arg("-DFFL_OSMESA")
                 .arg(&source)
-                .args(["-lOSMesa", "-lm"]);
+                .arg("-lOSMesa")
+                .args(&libraries)
+                .arg("-lm");
         }
     }
     cmd.arg("-o").arg(&exe);
@@ -875,6 +894,11 @@ c_programs!(
     texgen_osmesa_diff_modes,
     multitexture_state,
     draw_read_pixels,
+    eval_maps,
+    eval_osmesa_diff_mesh_fill,
+    glu_nurbs,
+    glu_quadrics_tess,
+    gles_fixed_point,
     raster_pos,
     osmesa_diff_raster_pos_lighting,
     system_gl_header,

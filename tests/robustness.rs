@@ -316,7 +316,25 @@ const CLIENT_ARRAYS: [GLenum; 8] = [
 ];
 /// Every capability glEnable accepts: lighting, clip planes, culling, the rasterization
 /// capabilities fflight stores (values of <GL/gl.h>), and the client arrays.
-const CAPS: [GLenum; 61] = [
+const CAPS: [GLenum; 79] = [
+    GL_MAP1_COLOR_4,
+    GL_MAP1_INDEX,
+    GL_MAP1_NORMAL,
+    GL_MAP1_TEXTURE_COORD_1,
+    GL_MAP1_TEXTURE_COORD_2,
+    GL_MAP1_TEXTURE_COORD_3,
+    GL_MAP1_TEXTURE_COORD_4,
+    GL_MAP1_VERTEX_3,
+    GL_MAP1_VERTEX_4,
+    GL_MAP2_COLOR_4,
+    GL_MAP2_INDEX,
+    GL_MAP2_NORMAL,
+    GL_MAP2_TEXTURE_COORD_1,
+    GL_MAP2_TEXTURE_COORD_2,
+    GL_MAP2_TEXTURE_COORD_3,
+    GL_MAP2_TEXTURE_COORD_4,
+    GL_MAP2_VERTEX_3,
+    GL_MAP2_VERTEX_4,
     GL_LIGHTING,
     GL_LIGHT0,
     GL_LIGHT1,
@@ -391,14 +409,38 @@ const TEXTURE_UNITS: [GLenum; 8] = [
     GL_TEXTURE7,
 ];
 const TEX_GEN_COORDS: [GLenum; 4] = [GL_S, GL_T, GL_R, GL_Q];
+const MAP1_TARGETS: [GLenum; 9] = [
+    GL_MAP1_COLOR_4,
+    GL_MAP1_INDEX,
+    GL_MAP1_NORMAL,
+    GL_MAP1_TEXTURE_COORD_1,
+    GL_MAP1_TEXTURE_COORD_2,
+    GL_MAP1_TEXTURE_COORD_3,
+    GL_MAP1_TEXTURE_COORD_4,
+    GL_MAP1_VERTEX_3,
+    GL_MAP1_VERTEX_4,
+];
+
+/// Values a control point of a GL_MAP1_* target has (0: no such target).
+fn map1_values_per_point(target: GLenum) -> usize {
+    MAP1_TARGETS
+        .iter()
+        .position(|&t| t == target)
+        .map_or(0, |kind| [4, 1, 3, 1, 2, 3, 4, 3, 4][kind])
+}
 const TEX_GEN_PNAMES: [GLenum; 3] = [GL_TEXTURE_GEN_MODE, GL_OBJECT_PLANE, GL_EYE_PLANE];
 /// The modes every coordinate takes (sphere, normal and reflection maps are not q's).
 const TEX_GEN_MODES: [GLenum; 2] = [GL_OBJECT_LINEAR, GL_EYE_LINEAR];
 /// How many of `CAPS` are capabilities.
-const VALID_CAPS: usize = 58;
+const VALID_CAPS: usize = 76;
 /// The glGet pnames of vertex processing, the older rasterization state and the buffer
 /// bindings; `get_pnames` adds those of tests/common/state_lists.rs.
-const GET_PNAMES: [GLenum; 101] = [
+const GET_PNAMES: [GLenum; 106] = [
+    GL_MAX_EVAL_ORDER,
+    GL_MAP1_GRID_DOMAIN,
+    GL_MAP1_GRID_SEGMENTS,
+    GL_MAP2_GRID_DOMAIN,
+    GL_MAP2_GRID_SEGMENTS,
     GL_ACTIVE_TEXTURE,
     GL_CLIENT_ACTIVE_TEXTURE,
     GL_INDEX_ARRAY_TYPE,
@@ -939,6 +981,22 @@ enum Op {
     },
     ActiveTexture(GLenum),
     ClientActiveTexture(GLenum),
+    Map1 {
+        target: GLenum,
+        domain: [f64; 2],
+        stride: i32,
+        order: i32,
+        points: Vec<f32>,
+    },
+    MapGrid1 {
+        segments: i32,
+        domain: [f64; 2],
+    },
+    EvalCoord2([f64; 2]),
+    EvalMesh1 {
+        mode: GLenum,
+        range: [i32; 2],
+    },
     EdgeFlag(bool),
     MatrixMode(GLenum),
     LoadIdentity,
@@ -1133,6 +1191,7 @@ impl Op {
                 | Op::Normal(_)
                 | Op::TexCoord(_)
                 | Op::MultiTexCoord { .. }
+                | Op::EvalCoord2(_)
                 | Op::EdgeFlag(_)
                 | Op::Vertex(_)
                 | Op::Material { .. }
@@ -1204,6 +1263,25 @@ impl Op {
             }
             Op::Capability { cap, .. } | Op::IsEnabled(cap) => !valid(cap, &CAPS[..VALID_CAPS]),
             Op::MatrixMode(mode) => !valid(mode, &MATRIX_MODES),
+            Op::Map1 {
+                target,
+                domain,
+                stride,
+                order,
+                ref points,
+            } => {
+                let k = map1_values_per_point(target);
+                k == 0
+                    || domain[0] == domain[1]
+                    || !(1..=30).contains(&order)
+                    || stride < k as i32
+                    || short(
+                        points.len(),
+                        (order.max(1) - 1) as usize * stride.max(0) as usize + k,
+                    )
+            }
+            Op::MapGrid1 { segments, .. } => segments <= 0,
+            Op::EvalMesh1 { mode, .. } => !valid(mode, &[GL_POINT, GL_LINE]),
             Op::MultiTexCoord { target, .. }
             | Op::ActiveTexture(target)
             | Op::ClientActiveTexture(target) => !valid(target, &TEXTURE_UNITS),
@@ -1572,7 +1650,27 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
         } else {
             rng.any_u32()
         }),
-        57 => match rng.below(5) {
+        57 => match rng.below(9) {
+            5 => {
+                let target = rng.enumeration(&MAP1_TARGETS);
+                let count = rng.below(40);
+                Op::Map1 {
+                    target,
+                    domain: [rng.double(f), rng.double(f)],
+                    stride: rng.range(-1, 6) as i32,
+                    order: rng.range(-1, 33) as i32,
+                    points: (0..count).map(|_| rng.float(f)).collect(),
+                }
+            }
+            6 => Op::MapGrid1 {
+                segments: rng.range(-2, 20) as i32,
+                domain: [rng.double(f), rng.double(f)],
+            },
+            7 => Op::EvalCoord2([rng.double(f), rng.double(f)]),
+            8 => Op::EvalMesh1 {
+                mode: rng.enumeration(&[GL_POINT, GL_LINE]),
+                range: [rng.range(-3, 10) as i32, rng.range(-3, 10) as i32],
+            },
             0 => Op::Finish,
             1 => Op::MultiTexCoord {
                 target: rng.enumeration(&TEXTURE_UNITS),
@@ -1883,6 +1981,28 @@ fn apply(
             params,
         } => ctx.tex_gen(*coord, *pname, params),
         Op::ActiveTexture(texture) => ctx.active_texture(*texture),
+        Op::Map1 {
+            target,
+            domain,
+            stride,
+            order,
+            points,
+        } => ctx.map(
+            *target,
+            1,
+            [domain[0], domain[1], 0.0, 1.0],
+            [*stride, 0],
+            [*order, 1],
+            points,
+        ),
+        Op::MapGrid1 { segments, domain } => {
+            ctx.map_grid(1, [*segments, 1], [domain[0], domain[1], 0.0, 1.0])
+        }
+        Op::EvalCoord2([u, v]) => {
+            ctx.eval_coord(2, *u, *v);
+            Ok(())
+        }
+        Op::EvalMesh1 { mode, range } => ctx.eval_mesh1(*mode, range[0], range[1]),
         Op::ClientActiveTexture(texture) => ctx.client_active_texture(*texture),
         Op::EdgeFlag(e) => {
             ctx.edge_flag(*e);

@@ -252,3 +252,56 @@ fn the_gl15_list_agrees_with_the_system_headers() {
     }
     assert_eq!(early, gl_h, "GL 1.0-1.3 and imaging functions vs <GL/gl.h>");
 }
+
+/// A C program compiled with -Werror against the system's <GL/gl.h> and <GL/glext.h>
+/// (GL_GLEXT_PROTOTYPES) takes the address of every GL 1.5 function fflight exports, so each
+/// export has the system prototype's exact signature (a mismatch is a compile error where
+/// fflight.h is included too), links against libfflight.a and calls through none of them.
+#[test]
+fn every_exported_gl15_function_links_with_the_system_prototypes() {
+    let not_yet = names("docs/gl15-not-exported.txt");
+    let functions: Vec<String> = names("docs/gl15-functions.txt")
+        .into_iter()
+        .filter(|f| !not_yet.contains(f))
+        .collect();
+    let mut source = String::from(
+        "#define GL_GLEXT_PROTOTYPES 1\n#include <GL/gl.h>\n#include <GL/glext.h>\n\
+         #include \"fflight.h\"\n#include <stdio.h>\n\n\
+         typedef void (*any_function)(void);\n\nstatic const any_function functions[] = {\n",
+    );
+    for f in &functions {
+        source.push_str(&format!("    (any_function){f},\n"));
+    }
+    source.push_str(
+        "};\n\nint main(void)\n{\n    size_t i, linked = 0;\n    \
+         for (i = 0; i < sizeof functions / sizeof functions[0]; i++)\n        \
+         linked += functions[i] != NULL;\n    printf(\"%u\\n\", (unsigned)linked);\n    \
+         return 0;\n}\n",
+    );
+    let dir = manifest_dir().join("target/gl15_addresses");
+    std::fs::create_dir_all(&dir).expect("create target/gl15_addresses");
+    let c_file = dir.join("gl15_addresses.c");
+    std::fs::write(&c_file, source).expect("write the C program");
+    let static_library = shared_library().with_file_name("libfflight.a");
+    let exe = dir.join("gl15_addresses");
+    let compile = Command::new("gcc")
+        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"])
+        .arg("-I")
+        .arg(manifest_dir().join("include"))
+        .arg(&c_file)
+        .arg(&static_library)
+        .args(["-lm", "-lpthread", "-ldl", "-o"])
+        .arg(&exe)
+        .output()
+        .expect("gcc is installed");
+    assert!(
+        compile.status.success(),
+        "{}",
+        String::from_utf8_lossy(&compile.stderr)
+    );
+    let run = Command::new(&exe).output().expect("run gl15_addresses");
+    assert_eq!(
+        String::from_utf8_lossy(&run.stdout).trim(),
+        functions.len().to_string()
+    );
+}

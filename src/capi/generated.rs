@@ -18,6 +18,8 @@ use crate::error::GlError;
 use crate::commands::texture::SubImageArgs;
 use crate::state::texture::{tex_env_count, tex_parameter_count};
 use crate::state::texgen::tex_gen_param_count;
+use crate::state::eval::{map1_values, map2_values};
+use crate::state::convert::{fixed, fixed_f64, fixed_param, fixed_params, fixed_query, to_fixed, to_fixed_all};
 
 #[unsafe(no_mangle)]
 pub extern "C" fn glBegin(mode: GLenum) {
@@ -2797,6 +2799,774 @@ pub unsafe extern "C" fn glReadPixels(_x: GLint, _y: GLint, width: GLsizei, heig
     })
 }
 
+/// # Safety
+/// `points` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let points = unsafe { read(points, map1_values(target, stride, order)) };
+        if ctx.record(|| TableCommand::glMap1f { target, u1, u2, stride, order, points: points.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.map(target, 1, [u1 as f64, u2 as f64, 0.0, 1.0], [stride, 0], [order, 1], points)
+    })
+}
+
+/// # Safety
+/// `points` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMap2f(target: GLenum, u1: GLfloat, u2: GLfloat, ustride: GLint, uorder: GLint, v1: GLfloat, v2: GLfloat, vstride: GLint, vorder: GLint, points: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let points = unsafe { read(points, map2_values(target, ustride, uorder, vstride, vorder)) };
+        if ctx.record(|| TableCommand::glMap2f { target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points: points.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.map(target, 2, [u1 as f64, u2 as f64, v1 as f64, v2 as f64], [ustride, vstride], [uorder, vorder], points)
+    })
+}
+
+/// # Safety
+/// `points` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let points = unsafe { read(points, map1_values(target, stride, order)) };
+        if ctx.record(|| TableCommand::glMap1d { target, u1, u2, stride, order, points: points.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.map(target, 1, [u1, u2, 0.0, 1.0], [stride, 0], [order, 1], points)
+    })
+}
+
+/// # Safety
+/// `points` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMap2d(target: GLenum, u1: GLdouble, u2: GLdouble, ustride: GLint, uorder: GLint, v1: GLdouble, v2: GLdouble, vstride: GLint, vorder: GLint, points: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let points = unsafe { read(points, map2_values(target, ustride, uorder, vstride, vorder)) };
+        if ctx.record(|| TableCommand::glMap2d { target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points: points.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.map(target, 2, [u1, u2, v1, v2], [ustride, vstride], [uorder, vorder], points)
+    })
+}
+
+/// # Safety
+/// `v` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetMapfv(target: GLenum, query: GLenum, v: *mut GLfloat) {
+    with_context(|ctx| {
+        let written = ctx.get_map(target, query).map(|v| v.into_iter().map(|x| x as f32).collect::<Vec<_>>())?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(v, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `v` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetMapdv(target: GLenum, query: GLenum, v: *mut GLdouble) {
+    with_context(|ctx| {
+        let written = ctx.get_map(target, query)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(v, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `v` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_map_i(target, query)?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(v, &written[..]) }
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMapGrid1f(un: GLint, u1: GLfloat, u2: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMapGrid1f { un, u1, u2 }.into()) {
+            return Ok(());
+        }
+        ctx.map_grid(1, [un, 1], [u1 as f64, u2 as f64, 0.0, 1.0])
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMapGrid2f(un: GLint, u1: GLfloat, u2: GLfloat, vn: GLint, v1: GLfloat, v2: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMapGrid2f { un, u1, u2, vn, v1, v2 }.into()) {
+            return Ok(());
+        }
+        ctx.map_grid(2, [un, vn], [u1 as f64, u2 as f64, v1 as f64, v2 as f64])
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMapGrid1d(un: GLint, u1: GLdouble, u2: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMapGrid1d { un, u1, u2 }.into()) {
+            return Ok(());
+        }
+        ctx.map_grid(1, [un, 1], [u1, u2, 0.0, 1.0])
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMapGrid2d(un: GLint, u1: GLdouble, u2: GLdouble, vn: GLint, v1: GLdouble, v2: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMapGrid2d { un, u1, u2, vn, v1, v2 }.into()) {
+            return Ok(());
+        }
+        ctx.map_grid(2, [un, vn], [u1, u2, v1, v2])
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEvalCoord1f(u: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glEvalCoord1f { u }.into()) {
+            return Ok(());
+        }
+        { ctx.eval_coord(1, u as f64, 0.0); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `u` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glEvalCoord1fv(u: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let u = unsafe { read(u, 1) };
+        if ctx.record(|| TableCommand::glEvalCoord1fv { u: u.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.eval_coord_v(1, u)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEvalCoord2f(u: GLfloat, v: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glEvalCoord2f { u, v }.into()) {
+            return Ok(());
+        }
+        { ctx.eval_coord(2, u as f64, v as f64); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `u` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glEvalCoord2fv(u: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let u = unsafe { read(u, 2) };
+        if ctx.record(|| TableCommand::glEvalCoord2fv { u: u.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.eval_coord_v(2, u)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEvalCoord1d(u: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glEvalCoord1d { u }.into()) {
+            return Ok(());
+        }
+        { ctx.eval_coord(1, u, 0.0); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `u` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glEvalCoord1dv(u: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let u = unsafe { read(u, 1) };
+        if ctx.record(|| TableCommand::glEvalCoord1dv { u: u.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.eval_coord_v(1, u)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEvalCoord2d(u: GLdouble, v: GLdouble) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glEvalCoord2d { u, v }.into()) {
+            return Ok(());
+        }
+        { ctx.eval_coord(2, u, v); Ok(()) }
+    })
+}
+
+/// # Safety
+/// `u` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glEvalCoord2dv(u: *const GLdouble) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let u = unsafe { read(u, 2) };
+        if ctx.record(|| TableCommand::glEvalCoord2dv { u: u.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.eval_coord_v(2, u)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEvalPoint1(i: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glEvalPoint1 { i }.into()) {
+            return Ok(());
+        }
+        { ctx.eval_point(1, i, 0); Ok(()) }
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEvalPoint2(i: GLint, j: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glEvalPoint2 { i, j }.into()) {
+            return Ok(());
+        }
+        { ctx.eval_point(2, i, j); Ok(()) }
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEvalMesh1(mode: GLenum, i1: GLint, i2: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glEvalMesh1 { mode, i1, i2 }.into()) {
+            return Ok(());
+        }
+        ctx.eval_mesh1(mode, i1, i2)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glEvalMesh2(mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glEvalMesh2 { mode, i1, i2, j1, j2 }.into()) {
+            return Ok(());
+        }
+        ctx.eval_mesh2(mode, [i1, i2], [j1, j2])
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glLightx(light: GLenum, pname: GLenum, param: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glLightx { light, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.light_scalar(light, pname, fixed(param))
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glLightxv(light: GLenum, pname: GLenum, params: *const GLfixed) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, light_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glLightxv { light, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.light(light, pname, &fixed_params(pname, params))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMaterialx(face: GLenum, pname: GLenum, param: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMaterialx { face, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.material_scalar(face, pname, fixed(param))
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMaterialxv(face: GLenum, pname: GLenum, params: *const GLfixed) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, material_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glMaterialxv { face, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.material(face, pname, &fixed_params(pname, params))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glLightModelx(pname: GLenum, param: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glLightModelx { pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.light_model_scalar(pname, fixed_param(pname, param))
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glLightModelxv(pname: GLenum, params: *const GLfixed) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, light_model_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glLightModelxv { pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.light_model(pname, &fixed_params(pname, params))
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetLightxv(light: GLenum, pname: GLenum, params: *mut GLfixed) {
+    with_context(|ctx| {
+        let written = ctx.get_light(light, pname).map(|(v, n)| to_fixed_all(&v.to_array()[..n]))?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetMaterialxv(face: GLenum, pname: GLenum, params: *mut GLfixed) {
+    with_context(|ctx| {
+        let written = ctx.get_material(face, pname).map(|(v, n)| to_fixed_all(&v.to_array()[..n]))?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glNormal3x(nx: GLfixed, ny: GLfixed, nz: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glNormal3x { nx, ny, nz }.into()) {
+            return Ok(());
+        }
+        { ctx.normal(glam::Vec3::new(fixed(nx), fixed(ny), fixed(nz))); Ok(()) }
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glColor4x(red: GLfixed, green: GLfixed, blue: GLfixed, alpha: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glColor4x { red, green, blue, alpha }.into()) {
+            return Ok(());
+        }
+        { ctx.color(glam::Vec4::new(fixed(red), fixed(green), fixed(blue), fixed(alpha))); Ok(()) }
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMultiTexCoord4x(target: GLenum, s: GLfixed, t: GLfixed, r: GLfixed, q: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMultiTexCoord4x { target, s, t, r, q }.into()) {
+            return Ok(());
+        }
+        ctx.multi_tex_coord(target, glam::Vec4::new(fixed(s), fixed(t), fixed(r), fixed(q)))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTranslatex(x: GLfixed, y: GLfixed, z: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glTranslatex { x, y, z }.into()) {
+            return Ok(());
+        }
+        ctx.translate(fixed_f64(x), fixed_f64(y), fixed_f64(z))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glRotatex(angle: GLfixed, x: GLfixed, y: GLfixed, z: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glRotatex { angle, x, y, z }.into()) {
+            return Ok(());
+        }
+        ctx.rotate(fixed_f64(angle), fixed_f64(x), fixed_f64(y), fixed_f64(z))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glScalex(x: GLfixed, y: GLfixed, z: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glScalex { x, y, z }.into()) {
+            return Ok(());
+        }
+        ctx.scale(fixed_f64(x), fixed_f64(y), fixed_f64(z))
+    })
+}
+
+/// # Safety
+/// `m` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glLoadMatrixx(m: *const GLfixed) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let m = unsafe { read(m, 16) };
+        if ctx.record(|| TableCommand::glLoadMatrixx { m: m.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.matrix_values(&m.iter().map(|&x| fixed(x)).collect::<Vec<f32>>(), Context::load_matrix)
+    })
+}
+
+/// # Safety
+/// `m` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glMultMatrixx(m: *const GLfixed) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let m = unsafe { read(m, 16) };
+        if ctx.record(|| TableCommand::glMultMatrixx { m: m.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.matrix_values(&m.iter().map(|&x| fixed(x)).collect::<Vec<f32>>(), Context::mult_matrix)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glOrthox(left: GLfixed, right: GLfixed, bottom: GLfixed, top: GLfixed, near: GLfixed, far: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glOrthox { left, right, bottom, top, near, far }.into()) {
+            return Ok(());
+        }
+        ctx.ortho(fixed_f64(left), fixed_f64(right), fixed_f64(bottom), fixed_f64(top), fixed_f64(near), fixed_f64(far))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glFrustumx(left: GLfixed, right: GLfixed, bottom: GLfixed, top: GLfixed, near: GLfixed, far: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glFrustumx { left, right, bottom, top, near, far }.into()) {
+            return Ok(());
+        }
+        ctx.frustum(fixed_f64(left), fixed_f64(right), fixed_f64(bottom), fixed_f64(top), fixed_f64(near), fixed_f64(far))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glOrthof(left: GLfloat, right: GLfloat, bottom: GLfloat, top: GLfloat, near: GLfloat, far: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glOrthof { left, right, bottom, top, near, far }.into()) {
+            return Ok(());
+        }
+        ctx.ortho(left.into(), right.into(), bottom.into(), top.into(), near.into(), far.into())
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glFrustumf(left: GLfloat, right: GLfloat, bottom: GLfloat, top: GLfloat, near: GLfloat, far: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glFrustumf { left, right, bottom, top, near, far }.into()) {
+            return Ok(());
+        }
+        ctx.frustum(left.into(), right.into(), bottom.into(), top.into(), near.into(), far.into())
+    })
+}
+
+/// # Safety
+/// `equation` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glClipPlanex(plane: GLenum, equation: *const GLfixed) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let equation = unsafe { read(equation, 4) };
+        if ctx.record(|| TableCommand::glClipPlanex { plane, equation: equation.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.clip_plane(plane, <[GLfixed; 4]>::try_from(equation).map_err(|_| GlError::InvalidValue)?.map(fixed_f64))
+    })
+}
+
+/// # Safety
+/// `equation` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glClipPlanef(plane: GLenum, equation: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let equation = unsafe { read(equation, 4) };
+        if ctx.record(|| TableCommand::glClipPlanef { plane, equation: equation.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.clip_plane(plane, <[GLfloat; 4]>::try_from(equation).map_err(|_| GlError::InvalidValue)?.map(f64::from))
+    })
+}
+
+/// # Safety
+/// `equation` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetClipPlanex(plane: GLenum, equation: *mut GLfixed) {
+    with_context(|ctx| {
+        let written = ctx.get_clip_plane(plane).map(|p| p.map(to_fixed))?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(equation, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `equation` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetClipPlanef(plane: GLenum, equation: *mut GLfloat) {
+    with_context(|ctx| {
+        let written = ctx.get_clip_plane(plane).map(|p| p.map(|v| v as f32))?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(equation, &written[..]) }
+    })
+}
+
+/// OpenGL ES 1.1's query of any glGet state as 16.16 fixed point.
+///
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetFixedv(pname: GLenum, params: *mut GLfixed) {
+    with_context(|ctx| {
+        let written = ctx.get(pname).map(|v| v.as_doubles().into_iter().map(to_fixed).collect::<Vec<_>>())?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glPointSizex(size: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPointSizex { size }.into()) {
+            return Ok(());
+        }
+        ctx.point_size(fixed(size))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glPointParameterx(pname: GLenum, param: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPointParameterx { pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.point_parameter_scalar(pname, fixed(param))
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glPointParameterxv(pname: GLenum, params: *const GLfixed) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, point_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glPointParameterxv { pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.point_parameter(pname, &fixed_params(pname, params))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glLineWidthx(width: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glLineWidthx { width }.into()) {
+            return Ok(());
+        }
+        ctx.line_width(fixed(width))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glFogx(pname: GLenum, param: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glFogx { pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.fog_scalar(pname, fixed_param(pname, param))
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glFogxv(pname: GLenum, params: *const GLfixed) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, fog_param_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glFogxv { pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.fog(pname, &fixed_params(pname, params))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexEnvx(target: GLenum, pname: GLenum, param: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glTexEnvx { target, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.tex_env_scalar(target, pname, fixed_param(pname, param))
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexEnvxv(target: GLenum, pname: GLenum, params: *const GLfixed) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, tex_env_count(target, pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glTexEnvxv { target, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.tex_env(target, pname, &fixed_params(pname, params))
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexEnvxv(target: GLenum, pname: GLenum, params: *mut GLfixed) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_env(target, pname).map(|v| fixed_query(pname, &v))?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glTexParameterx(target: GLenum, pname: GLenum, param: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glTexParameterx { target, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.tex_parameter_scalar(target, pname, fixed_param(pname, param))
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glTexParameterxv(target: GLenum, pname: GLenum, params: *const GLfixed) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, tex_parameter_count(pname).unwrap_or(0)) };
+        if ctx.record(|| TableCommand::glTexParameterxv { target, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.tex_parameter(target, pname, &fixed_params(pname, params))
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetTexParameterxv(target: GLenum, pname: GLenum, params: *mut GLfixed) {
+    with_context(|ctx| {
+        let written = ctx.get_tex_parameter(target, pname).map(|v| fixed_query(pname, &v))?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glClearColorx(red: GLclampx, green: GLclampx, blue: GLclampx, alpha: GLclampx) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glClearColorx { red, green, blue, alpha }.into()) {
+            return Ok(());
+        }
+        ctx.clear_color(glam::Vec4::new(fixed(red), fixed(green), fixed(blue), fixed(alpha)))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glClearDepthx(depth: GLclampx) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glClearDepthx { depth }.into()) {
+            return Ok(());
+        }
+        ctx.clear_depth(fixed_f64(depth))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glClearDepthf(depth: GLclampf) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glClearDepthf { depth }.into()) {
+            return Ok(());
+        }
+        ctx.clear_depth(depth.into())
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glDepthRangex(near: GLclampx, far: GLclampx) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glDepthRangex { near, far }.into()) {
+            return Ok(());
+        }
+        ctx.depth_range(fixed_f64(near), fixed_f64(far))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glDepthRangef(near: GLclampf, far: GLclampf) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glDepthRangef { near, far }.into()) {
+            return Ok(());
+        }
+        ctx.depth_range(near.into(), far.into())
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glAlphaFuncx(func: GLenum, reference: GLclampx) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glAlphaFuncx { func, reference }.into()) {
+            return Ok(());
+        }
+        ctx.alpha_func(func, fixed(reference))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glPolygonOffsetx(factor: GLfixed, units: GLfixed) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glPolygonOffsetx { factor, units }.into()) {
+            return Ok(());
+        }
+        ctx.polygon_offset(fixed(factor), fixed(units))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glSampleCoveragex(value: GLclampx, invert: GLboolean) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glSampleCoveragex { value, invert }.into()) {
+            return Ok(());
+        }
+        ctx.sample_coverage(fixed(value), invert != GL_FALSE)
+    })
+}
+
 /// A command of the table compiled into a display list: its parameters, and a copy of the
 /// values its pointers gave at compile time.
 #[allow(non_camel_case_types)]
@@ -3011,6 +3781,64 @@ pub enum TableCommand {
     glMultiTexCoord4d { target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble },
     glMultiTexCoord4dv { target: GLenum, v: Vec<GLdouble> },
     glDrawPixels { width: GLsizei, height: GLsizei, format: GLenum, ty: GLenum, _pixels: Vec<u8> },
+    glMap1f { target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: Vec<GLfloat> },
+    glMap2f { target: GLenum, u1: GLfloat, u2: GLfloat, ustride: GLint, uorder: GLint, v1: GLfloat, v2: GLfloat, vstride: GLint, vorder: GLint, points: Vec<GLfloat> },
+    glMap1d { target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: Vec<GLdouble> },
+    glMap2d { target: GLenum, u1: GLdouble, u2: GLdouble, ustride: GLint, uorder: GLint, v1: GLdouble, v2: GLdouble, vstride: GLint, vorder: GLint, points: Vec<GLdouble> },
+    glMapGrid1f { un: GLint, u1: GLfloat, u2: GLfloat },
+    glMapGrid2f { un: GLint, u1: GLfloat, u2: GLfloat, vn: GLint, v1: GLfloat, v2: GLfloat },
+    glMapGrid1d { un: GLint, u1: GLdouble, u2: GLdouble },
+    glMapGrid2d { un: GLint, u1: GLdouble, u2: GLdouble, vn: GLint, v1: GLdouble, v2: GLdouble },
+    glEvalCoord1f { u: GLfloat },
+    glEvalCoord1fv { u: Vec<GLfloat> },
+    glEvalCoord2f { u: GLfloat, v: GLfloat },
+    glEvalCoord2fv { u: Vec<GLfloat> },
+    glEvalCoord1d { u: GLdouble },
+    glEvalCoord1dv { u: Vec<GLdouble> },
+    glEvalCoord2d { u: GLdouble, v: GLdouble },
+    glEvalCoord2dv { u: Vec<GLdouble> },
+    glEvalPoint1 { i: GLint },
+    glEvalPoint2 { i: GLint, j: GLint },
+    glEvalMesh1 { mode: GLenum, i1: GLint, i2: GLint },
+    glEvalMesh2 { mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint },
+    glLightx { light: GLenum, pname: GLenum, param: GLfixed },
+    glLightxv { light: GLenum, pname: GLenum, params: Vec<GLfixed> },
+    glMaterialx { face: GLenum, pname: GLenum, param: GLfixed },
+    glMaterialxv { face: GLenum, pname: GLenum, params: Vec<GLfixed> },
+    glLightModelx { pname: GLenum, param: GLfixed },
+    glLightModelxv { pname: GLenum, params: Vec<GLfixed> },
+    glNormal3x { nx: GLfixed, ny: GLfixed, nz: GLfixed },
+    glColor4x { red: GLfixed, green: GLfixed, blue: GLfixed, alpha: GLfixed },
+    glMultiTexCoord4x { target: GLenum, s: GLfixed, t: GLfixed, r: GLfixed, q: GLfixed },
+    glTranslatex { x: GLfixed, y: GLfixed, z: GLfixed },
+    glRotatex { angle: GLfixed, x: GLfixed, y: GLfixed, z: GLfixed },
+    glScalex { x: GLfixed, y: GLfixed, z: GLfixed },
+    glLoadMatrixx { m: Vec<GLfixed> },
+    glMultMatrixx { m: Vec<GLfixed> },
+    glOrthox { left: GLfixed, right: GLfixed, bottom: GLfixed, top: GLfixed, near: GLfixed, far: GLfixed },
+    glFrustumx { left: GLfixed, right: GLfixed, bottom: GLfixed, top: GLfixed, near: GLfixed, far: GLfixed },
+    glOrthof { left: GLfloat, right: GLfloat, bottom: GLfloat, top: GLfloat, near: GLfloat, far: GLfloat },
+    glFrustumf { left: GLfloat, right: GLfloat, bottom: GLfloat, top: GLfloat, near: GLfloat, far: GLfloat },
+    glClipPlanex { plane: GLenum, equation: Vec<GLfixed> },
+    glClipPlanef { plane: GLenum, equation: Vec<GLfloat> },
+    glPointSizex { size: GLfixed },
+    glPointParameterx { pname: GLenum, param: GLfixed },
+    glPointParameterxv { pname: GLenum, params: Vec<GLfixed> },
+    glLineWidthx { width: GLfixed },
+    glFogx { pname: GLenum, param: GLfixed },
+    glFogxv { pname: GLenum, params: Vec<GLfixed> },
+    glTexEnvx { target: GLenum, pname: GLenum, param: GLfixed },
+    glTexEnvxv { target: GLenum, pname: GLenum, params: Vec<GLfixed> },
+    glTexParameterx { target: GLenum, pname: GLenum, param: GLfixed },
+    glTexParameterxv { target: GLenum, pname: GLenum, params: Vec<GLfixed> },
+    glClearColorx { red: GLclampx, green: GLclampx, blue: GLclampx, alpha: GLclampx },
+    glClearDepthx { depth: GLclampx },
+    glClearDepthf { depth: GLclampf },
+    glDepthRangex { near: GLclampx, far: GLclampx },
+    glDepthRangef { near: GLclampf, far: GLclampf },
+    glAlphaFuncx { func: GLenum, reference: GLclampx },
+    glPolygonOffsetx { factor: GLfixed, units: GLfixed },
+    glSampleCoveragex { value: GLclampx, invert: GLboolean },
 }
 
 impl TableCommand {
@@ -4121,6 +4949,357 @@ impl TableCommand {
                 let ty = *ty;
                 let _pixels = &_pixels[..];
                 ctx.draw_pixels(width, height, format, ty)
+            }
+            TableCommand::glMap1f { target, u1, u2, stride, order, points } => {
+                let target = *target;
+                let u1 = *u1;
+                let u2 = *u2;
+                let stride = *stride;
+                let order = *order;
+                let points = &points[..];
+                ctx.map(target, 1, [u1 as f64, u2 as f64, 0.0, 1.0], [stride, 0], [order, 1], points)
+            }
+            TableCommand::glMap2f { target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points } => {
+                let target = *target;
+                let u1 = *u1;
+                let u2 = *u2;
+                let ustride = *ustride;
+                let uorder = *uorder;
+                let v1 = *v1;
+                let v2 = *v2;
+                let vstride = *vstride;
+                let vorder = *vorder;
+                let points = &points[..];
+                ctx.map(target, 2, [u1 as f64, u2 as f64, v1 as f64, v2 as f64], [ustride, vstride], [uorder, vorder], points)
+            }
+            TableCommand::glMap1d { target, u1, u2, stride, order, points } => {
+                let target = *target;
+                let u1 = *u1;
+                let u2 = *u2;
+                let stride = *stride;
+                let order = *order;
+                let points = &points[..];
+                ctx.map(target, 1, [u1, u2, 0.0, 1.0], [stride, 0], [order, 1], points)
+            }
+            TableCommand::glMap2d { target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points } => {
+                let target = *target;
+                let u1 = *u1;
+                let u2 = *u2;
+                let ustride = *ustride;
+                let uorder = *uorder;
+                let v1 = *v1;
+                let v2 = *v2;
+                let vstride = *vstride;
+                let vorder = *vorder;
+                let points = &points[..];
+                ctx.map(target, 2, [u1, u2, v1, v2], [ustride, vstride], [uorder, vorder], points)
+            }
+            TableCommand::glMapGrid1f { un, u1, u2 } => {
+                let un = *un;
+                let u1 = *u1;
+                let u2 = *u2;
+                ctx.map_grid(1, [un, 1], [u1 as f64, u2 as f64, 0.0, 1.0])
+            }
+            TableCommand::glMapGrid2f { un, u1, u2, vn, v1, v2 } => {
+                let un = *un;
+                let u1 = *u1;
+                let u2 = *u2;
+                let vn = *vn;
+                let v1 = *v1;
+                let v2 = *v2;
+                ctx.map_grid(2, [un, vn], [u1 as f64, u2 as f64, v1 as f64, v2 as f64])
+            }
+            TableCommand::glMapGrid1d { un, u1, u2 } => {
+                let un = *un;
+                let u1 = *u1;
+                let u2 = *u2;
+                ctx.map_grid(1, [un, 1], [u1, u2, 0.0, 1.0])
+            }
+            TableCommand::glMapGrid2d { un, u1, u2, vn, v1, v2 } => {
+                let un = *un;
+                let u1 = *u1;
+                let u2 = *u2;
+                let vn = *vn;
+                let v1 = *v1;
+                let v2 = *v2;
+                ctx.map_grid(2, [un, vn], [u1, u2, v1, v2])
+            }
+            TableCommand::glEvalCoord1f { u } => {
+                let u = *u;
+                { ctx.eval_coord(1, u as f64, 0.0); Ok(()) }
+            }
+            TableCommand::glEvalCoord1fv { u } => {
+                let u = &u[..];
+                ctx.eval_coord_v(1, u)
+            }
+            TableCommand::glEvalCoord2f { u, v } => {
+                let u = *u;
+                let v = *v;
+                { ctx.eval_coord(2, u as f64, v as f64); Ok(()) }
+            }
+            TableCommand::glEvalCoord2fv { u } => {
+                let u = &u[..];
+                ctx.eval_coord_v(2, u)
+            }
+            TableCommand::glEvalCoord1d { u } => {
+                let u = *u;
+                { ctx.eval_coord(1, u, 0.0); Ok(()) }
+            }
+            TableCommand::glEvalCoord1dv { u } => {
+                let u = &u[..];
+                ctx.eval_coord_v(1, u)
+            }
+            TableCommand::glEvalCoord2d { u, v } => {
+                let u = *u;
+                let v = *v;
+                { ctx.eval_coord(2, u, v); Ok(()) }
+            }
+            TableCommand::glEvalCoord2dv { u } => {
+                let u = &u[..];
+                ctx.eval_coord_v(2, u)
+            }
+            TableCommand::glEvalPoint1 { i } => {
+                let i = *i;
+                { ctx.eval_point(1, i, 0); Ok(()) }
+            }
+            TableCommand::glEvalPoint2 { i, j } => {
+                let i = *i;
+                let j = *j;
+                { ctx.eval_point(2, i, j); Ok(()) }
+            }
+            TableCommand::glEvalMesh1 { mode, i1, i2 } => {
+                let mode = *mode;
+                let i1 = *i1;
+                let i2 = *i2;
+                ctx.eval_mesh1(mode, i1, i2)
+            }
+            TableCommand::glEvalMesh2 { mode, i1, i2, j1, j2 } => {
+                let mode = *mode;
+                let i1 = *i1;
+                let i2 = *i2;
+                let j1 = *j1;
+                let j2 = *j2;
+                ctx.eval_mesh2(mode, [i1, i2], [j1, j2])
+            }
+            TableCommand::glLightx { light, pname, param } => {
+                let light = *light;
+                let pname = *pname;
+                let param = *param;
+                ctx.light_scalar(light, pname, fixed(param))
+            }
+            TableCommand::glLightxv { light, pname, params } => {
+                let light = *light;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.light(light, pname, &fixed_params(pname, params))
+            }
+            TableCommand::glMaterialx { face, pname, param } => {
+                let face = *face;
+                let pname = *pname;
+                let param = *param;
+                ctx.material_scalar(face, pname, fixed(param))
+            }
+            TableCommand::glMaterialxv { face, pname, params } => {
+                let face = *face;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.material(face, pname, &fixed_params(pname, params))
+            }
+            TableCommand::glLightModelx { pname, param } => {
+                let pname = *pname;
+                let param = *param;
+                ctx.light_model_scalar(pname, fixed_param(pname, param))
+            }
+            TableCommand::glLightModelxv { pname, params } => {
+                let pname = *pname;
+                let params = &params[..];
+                ctx.light_model(pname, &fixed_params(pname, params))
+            }
+            TableCommand::glNormal3x { nx, ny, nz } => {
+                let nx = *nx;
+                let ny = *ny;
+                let nz = *nz;
+                { ctx.normal(glam::Vec3::new(fixed(nx), fixed(ny), fixed(nz))); Ok(()) }
+            }
+            TableCommand::glColor4x { red, green, blue, alpha } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                let alpha = *alpha;
+                { ctx.color(glam::Vec4::new(fixed(red), fixed(green), fixed(blue), fixed(alpha))); Ok(()) }
+            }
+            TableCommand::glMultiTexCoord4x { target, s, t, r, q } => {
+                let target = *target;
+                let s = *s;
+                let t = *t;
+                let r = *r;
+                let q = *q;
+                ctx.multi_tex_coord(target, glam::Vec4::new(fixed(s), fixed(t), fixed(r), fixed(q)))
+            }
+            TableCommand::glTranslatex { x, y, z } => {
+                let x = *x;
+                let y = *y;
+                let z = *z;
+                ctx.translate(fixed_f64(x), fixed_f64(y), fixed_f64(z))
+            }
+            TableCommand::glRotatex { angle, x, y, z } => {
+                let angle = *angle;
+                let x = *x;
+                let y = *y;
+                let z = *z;
+                ctx.rotate(fixed_f64(angle), fixed_f64(x), fixed_f64(y), fixed_f64(z))
+            }
+            TableCommand::glScalex { x, y, z } => {
+                let x = *x;
+                let y = *y;
+                let z = *z;
+                ctx.scale(fixed_f64(x), fixed_f64(y), fixed_f64(z))
+            }
+            TableCommand::glLoadMatrixx { m } => {
+                let m = &m[..];
+                ctx.matrix_values(&m.iter().map(|&x| fixed(x)).collect::<Vec<f32>>(), Context::load_matrix)
+            }
+            TableCommand::glMultMatrixx { m } => {
+                let m = &m[..];
+                ctx.matrix_values(&m.iter().map(|&x| fixed(x)).collect::<Vec<f32>>(), Context::mult_matrix)
+            }
+            TableCommand::glOrthox { left, right, bottom, top, near, far } => {
+                let left = *left;
+                let right = *right;
+                let bottom = *bottom;
+                let top = *top;
+                let near = *near;
+                let far = *far;
+                ctx.ortho(fixed_f64(left), fixed_f64(right), fixed_f64(bottom), fixed_f64(top), fixed_f64(near), fixed_f64(far))
+            }
+            TableCommand::glFrustumx { left, right, bottom, top, near, far } => {
+                let left = *left;
+                let right = *right;
+                let bottom = *bottom;
+                let top = *top;
+                let near = *near;
+                let far = *far;
+                ctx.frustum(fixed_f64(left), fixed_f64(right), fixed_f64(bottom), fixed_f64(top), fixed_f64(near), fixed_f64(far))
+            }
+            TableCommand::glOrthof { left, right, bottom, top, near, far } => {
+                let left = *left;
+                let right = *right;
+                let bottom = *bottom;
+                let top = *top;
+                let near = *near;
+                let far = *far;
+                ctx.ortho(left.into(), right.into(), bottom.into(), top.into(), near.into(), far.into())
+            }
+            TableCommand::glFrustumf { left, right, bottom, top, near, far } => {
+                let left = *left;
+                let right = *right;
+                let bottom = *bottom;
+                let top = *top;
+                let near = *near;
+                let far = *far;
+                ctx.frustum(left.into(), right.into(), bottom.into(), top.into(), near.into(), far.into())
+            }
+            TableCommand::glClipPlanex { plane, equation } => {
+                let plane = *plane;
+                let equation = &equation[..];
+                ctx.clip_plane(plane, <[GLfixed; 4]>::try_from(equation).map_err(|_| GlError::InvalidValue)?.map(fixed_f64))
+            }
+            TableCommand::glClipPlanef { plane, equation } => {
+                let plane = *plane;
+                let equation = &equation[..];
+                ctx.clip_plane(plane, <[GLfloat; 4]>::try_from(equation).map_err(|_| GlError::InvalidValue)?.map(f64::from))
+            }
+            TableCommand::glPointSizex { size } => {
+                let size = *size;
+                ctx.point_size(fixed(size))
+            }
+            TableCommand::glPointParameterx { pname, param } => {
+                let pname = *pname;
+                let param = *param;
+                ctx.point_parameter_scalar(pname, fixed(param))
+            }
+            TableCommand::glPointParameterxv { pname, params } => {
+                let pname = *pname;
+                let params = &params[..];
+                ctx.point_parameter(pname, &fixed_params(pname, params))
+            }
+            TableCommand::glLineWidthx { width } => {
+                let width = *width;
+                ctx.line_width(fixed(width))
+            }
+            TableCommand::glFogx { pname, param } => {
+                let pname = *pname;
+                let param = *param;
+                ctx.fog_scalar(pname, fixed_param(pname, param))
+            }
+            TableCommand::glFogxv { pname, params } => {
+                let pname = *pname;
+                let params = &params[..];
+                ctx.fog(pname, &fixed_params(pname, params))
+            }
+            TableCommand::glTexEnvx { target, pname, param } => {
+                let target = *target;
+                let pname = *pname;
+                let param = *param;
+                ctx.tex_env_scalar(target, pname, fixed_param(pname, param))
+            }
+            TableCommand::glTexEnvxv { target, pname, params } => {
+                let target = *target;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.tex_env(target, pname, &fixed_params(pname, params))
+            }
+            TableCommand::glTexParameterx { target, pname, param } => {
+                let target = *target;
+                let pname = *pname;
+                let param = *param;
+                ctx.tex_parameter_scalar(target, pname, fixed_param(pname, param))
+            }
+            TableCommand::glTexParameterxv { target, pname, params } => {
+                let target = *target;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.tex_parameter(target, pname, &fixed_params(pname, params))
+            }
+            TableCommand::glClearColorx { red, green, blue, alpha } => {
+                let red = *red;
+                let green = *green;
+                let blue = *blue;
+                let alpha = *alpha;
+                ctx.clear_color(glam::Vec4::new(fixed(red), fixed(green), fixed(blue), fixed(alpha)))
+            }
+            TableCommand::glClearDepthx { depth } => {
+                let depth = *depth;
+                ctx.clear_depth(fixed_f64(depth))
+            }
+            TableCommand::glClearDepthf { depth } => {
+                let depth = *depth;
+                ctx.clear_depth(depth.into())
+            }
+            TableCommand::glDepthRangex { near, far } => {
+                let near = *near;
+                let far = *far;
+                ctx.depth_range(fixed_f64(near), fixed_f64(far))
+            }
+            TableCommand::glDepthRangef { near, far } => {
+                let near = *near;
+                let far = *far;
+                ctx.depth_range(near.into(), far.into())
+            }
+            TableCommand::glAlphaFuncx { func, reference } => {
+                let func = *func;
+                let reference = *reference;
+                ctx.alpha_func(func, fixed(reference))
+            }
+            TableCommand::glPolygonOffsetx { factor, units } => {
+                let factor = *factor;
+                let units = *units;
+                ctx.polygon_offset(fixed(factor), fixed(units))
+            }
+            TableCommand::glSampleCoveragex { value, invert } => {
+                let value = *value;
+                let invert = *invert;
+                ctx.sample_coverage(fixed(value), invert != GL_FALSE)
             }
         }
     }

@@ -14,6 +14,7 @@ use crate::gl::*;
 use crate::pipeline::vertex::CurrentAttribs;
 use crate::state::arrays::VertexArrays;
 use crate::state::enables::{EVAL_CAPABILITIES, MAX_CLIP_PLANES};
+use crate::state::eval::EvalAttribs;
 use crate::state::fog::FogAttribs;
 use crate::state::fragment::{
     AccumBufferAttribs, ColorBufferAttribs, DepthBufferAttribs, ScissorAttribs,
@@ -57,6 +58,24 @@ pub const ENABLE_BIT_CAPABILITIES: &[GLenum] = &[
     GL_CLIP_PLANE4,
     GL_CLIP_PLANE5,
     GL_AUTO_NORMAL,
+    GL_MAP1_COLOR_4,
+    GL_MAP1_INDEX,
+    GL_MAP1_NORMAL,
+    GL_MAP1_TEXTURE_COORD_1,
+    GL_MAP1_TEXTURE_COORD_2,
+    GL_MAP1_TEXTURE_COORD_3,
+    GL_MAP1_TEXTURE_COORD_4,
+    GL_MAP1_VERTEX_3,
+    GL_MAP1_VERTEX_4,
+    GL_MAP2_COLOR_4,
+    GL_MAP2_INDEX,
+    GL_MAP2_NORMAL,
+    GL_MAP2_TEXTURE_COORD_1,
+    GL_MAP2_TEXTURE_COORD_2,
+    GL_MAP2_TEXTURE_COORD_3,
+    GL_MAP2_TEXTURE_COORD_4,
+    GL_MAP2_VERTEX_3,
+    GL_MAP2_VERTEX_4,
     GL_TEXTURE_1D,
     GL_TEXTURE_2D,
     GL_TEXTURE_3D,
@@ -176,10 +195,11 @@ attribute_groups! {
     GL_SCISSOR_BIT => Scissor { scissor: ScissorAttribs },
     GL_MULTISAMPLE_BIT => Multisample { multisample: MultisampleAttribs },
     GL_LIST_BIT => List { lists.base: u32 },
+    // The map enables and the grids (the maps themselves are in no group).
+    GL_EVAL_BIT => Eval { eval: EvalAttribs },
     }
     capabilities {
     GL_ENABLE_BIT => ENABLE_BIT_CAPABILITIES,
-    // Only GL_AUTO_NORMAL: evaluator maps, grids and their enables do not exist yet.
     GL_EVAL_BIT => EVAL_CAPABILITIES,
     }
     custom {

@@ -243,6 +243,10 @@ impl Context {
             Capability::CullFace => self.enables.cull_face = enabled,
             Capability::ClipPlane(i) => self.enables.clip_planes[i] = enabled,
             Capability::TexGen(i) => self.textures.unit_mut().tex_gen.coords[i].enabled = enabled,
+            Capability::Map(dimensions, kind) => {
+                self.eval.enabled[dimensions - 1][kind] = enabled;
+                return Ok(());
+            }
             Capability::Other(cap) => self.enables.set_other(cap, enabled),
         }
         self.invalidate();
@@ -267,6 +271,7 @@ impl Context {
             Capability::CullFace => self.enables.cull_face,
             Capability::ClipPlane(i) => self.enables.clip_planes[i],
             Capability::TexGen(i) => self.textures.unit().tex_gen.coords[i].enabled,
+            Capability::Map(dimensions, kind) => self.eval.enabled[dimensions - 1][kind],
             Capability::Other(cap) => self.enables.other(cap),
         })
     }

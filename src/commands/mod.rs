@@ -4,6 +4,7 @@ pub mod arrays;
 pub mod attrib_stack;
 pub mod buffers;
 pub mod capture;
+pub mod eval;
 pub mod feedback;
 pub mod fragment;
 pub mod lighting;

@@ -161,6 +161,11 @@ impl Context {
             GL_LIST_INDEX => int(self.lists.index() as i32),
             GL_LIST_MODE => enumeration(self.lists.mode()),
             GL_MAX_LIST_NESTING => int(MAX_LIST_NESTING as i32),
+            GL_MAX_EVAL_ORDER => int(crate::state::eval::MAX_EVAL_ORDER as i32),
+            GL_MAP1_GRID_DOMAIN => StateValue::Floats(self.eval.grids[0].domain[..2].to_vec()),
+            GL_MAP2_GRID_DOMAIN => StateValue::Floats(self.eval.grids[1].domain.to_vec()),
+            GL_MAP1_GRID_SEGMENTS => int(self.eval.grids[0].segments[0]),
+            GL_MAP2_GRID_SEGMENTS => StateValue::Ints(self.eval.grids[1].segments.to_vec()),
             GL_FEEDBACK_BUFFER_SIZE => int(self.feedback.capacity as i32),
             GL_FEEDBACK_BUFFER_TYPE => {
                 enumeration(self.feedback.layout.map_or(GL_2D, |layout| layout.kind))

@@ -1,5 +1,7 @@
 //! Integer <-> float conversions of §2.14 (table 2.9) and §6.1.2.
 
+use crate::gl::*;
+
 /// A signed 32-bit integer color component mapped linearly to [-1, 1]: (2c + 1) / (2^32 - 1).
 pub fn int_to_color(c: i32) -> f32 {
     ((2.0 * c as f64 + 1.0) / 4_294_967_295.0) as f32
@@ -88,6 +90,80 @@ component!(i32, int_to_color);
 component!(u32, uint_to_float);
 component!(f32, |v: f32| v);
 component!(f64, |v: f64| v as f32);
+
+/// A GLfixed value (OpenGL ES 1.1 §2.1.2: 16.16 two's complement) as a float: x / 65536,
+/// exact in double, rounded once to float.
+pub fn fixed(x: i32) -> f32 {
+    fixed_f64(x) as f32
+}
+
+pub fn fixed_f64(x: i32) -> f64 {
+    f64::from(x) / 65536.0
+}
+
+/// A value as GLfixed, for glGetFixedv and the `x` queries: times 65536, rounded to the
+/// nearest integer, saturated to the GLfixed range (NaN gives 0).
+pub fn to_fixed(v: f64) -> i32 {
+    (v * 65536.0).round() as i32
+}
+
+/// A GLfixed parameter of glFogx, glTexEnvx, glTexParameterx or glLightModelx: enumerated
+/// and boolean parameters (GL_FOG_MODE, GL_TEXTURE_ENV_MODE, the combiner's, filters and
+/// wrap modes, GL_LIGHT_MODEL_TWO_SIDE, ...) carry their value itself, as OpenGL ES 1.1
+/// passes them; the others are 16.16.
+pub fn fixed_param(pname: GLenum, x: i32) -> f32 {
+    let as_is = matches!(
+        pname,
+        GL_FOG_MODE
+            | GL_FOG_COORD_SRC
+            | GL_TEXTURE_ENV_MODE
+            | GL_COMBINE_RGB
+            | GL_COMBINE_ALPHA
+            | GL_SOURCE0_RGB..=GL_SOURCE2_ALPHA
+            | GL_OPERAND0_RGB..=GL_OPERAND2_ALPHA
+            | GL_TEXTURE_MIN_FILTER
+            | GL_TEXTURE_MAG_FILTER
+            | GL_TEXTURE_WRAP_S
+            | GL_TEXTURE_WRAP_T
+            | GL_TEXTURE_WRAP_R
+            | GL_GENERATE_MIPMAP
+            | GL_TEXTURE_COMPARE_MODE
+            | GL_TEXTURE_COMPARE_FUNC
+            | GL_DEPTH_TEXTURE_MODE
+            | GL_TEXTURE_BASE_LEVEL
+            | GL_TEXTURE_MAX_LEVEL
+            | GL_LIGHT_MODEL_TWO_SIDE
+            | GL_LIGHT_MODEL_LOCAL_VIEWER
+            | GL_LIGHT_MODEL_COLOR_CONTROL
+    );
+    if as_is { x as f32 } else { fixed(x) }
+}
+
+/// `fixed_param` of each value.
+pub fn fixed_params(pname: GLenum, values: &[i32]) -> Vec<f32> {
+    values.iter().map(|&x| fixed_param(pname, x)).collect()
+}
+
+/// Values as GLfixed.
+pub fn to_fixed_all(values: &[f32]) -> Vec<i32> {
+    values.iter().map(|&v| to_fixed(f64::from(v))).collect()
+}
+
+/// The values of a glGetTexEnvxv or glGetTexParameterxv: enumerated ones as they are, the
+/// others as 16.16.
+pub fn fixed_query(pname: GLenum, values: &[f32]) -> Vec<i32> {
+    let as_is = fixed_param(pname, 1) == 1.0;
+    values
+        .iter()
+        .map(|&v| {
+            if as_is {
+                v as i32
+            } else {
+                to_fixed(f64::from(v))
+            }
+        })
+        .collect()
+}
 
 #[cfg(test)]
 mod tests {

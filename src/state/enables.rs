@@ -6,11 +6,10 @@ use crate::gl::*;
 /// GL_MAX_CLIP_PLANES.
 pub const MAX_CLIP_PLANES: usize = 6;
 
-// GL 1.5 capabilities fflight accepts and reports but whose state it does not implement yet
-// (evaluators): glEnable stores them so glIsEnabled answers. The rasterization and
-// per-fragment capabilities live in their attribute groups (see `Context::group_flag`).
+// The rasterization and per-fragment capabilities live in their attribute groups (see
+// `Context::group_flag`).
 
-/// The evaluators' capability fflight has (GL_EVAL_BIT's; the maps' enables are not accepted).
+/// GL_AUTO_NORMAL, kept in `Enables` (GL_EVAL_BIT's; the maps' enables are in `EvalAttribs`).
 pub const EVAL_CAPABILITIES: &[GLenum] = &[GL_AUTO_NORMAL];
 /// Texture coordinate generation's (GL_TEXTURE_BIT's); the texture target enables are per
 /// texture unit (`TextureUnit::enabled`).
@@ -45,6 +44,8 @@ pub enum Capability {
     ClipPlane(usize),
     /// GL_TEXTURE_GEN_S to _Q of the active texture unit.
     TexGen(usize),
+    /// GL_MAP1_* (dimension 1) and GL_MAP2_* (2) evaluator maps, by kind.
+    Map(usize, usize),
     Other(GLenum),
 }
 
@@ -62,6 +63,12 @@ impl Capability {
             }
             GL_TEXTURE_GEN_S..=GL_TEXTURE_GEN_Q => {
                 Capability::TexGen((cap - GL_TEXTURE_GEN_S) as usize)
+            }
+            GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4 => {
+                Capability::Map(1, (cap - GL_MAP1_COLOR_4) as usize)
+            }
+            GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4 => {
+                Capability::Map(2, (cap - GL_MAP2_COLOR_4) as usize)
             }
             _ if EVAL_CAPABILITIES.contains(&cap) => Capability::Other(cap),
             _ => return Err(GlError::InvalidEnum),

@@ -4,6 +4,7 @@ pub mod arrays;
 pub mod buffers;
 pub mod convert;
 pub mod enables;
+pub mod eval;
 pub mod fog;
 pub mod fragment;
 pub mod hints;
