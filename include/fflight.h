@@ -2935,6 +2935,186 @@ typedef struct FflCapturedPrimitive {
 #define GL_DOMAIN 2562
 #endif
 
+#ifndef GL_COLOR_TABLE
+#define GL_COLOR_TABLE 32976
+#endif
+
+#ifndef GL_POST_CONVOLUTION_COLOR_TABLE
+#define GL_POST_CONVOLUTION_COLOR_TABLE 32977
+#endif
+
+#ifndef GL_POST_COLOR_MATRIX_COLOR_TABLE
+#define GL_POST_COLOR_MATRIX_COLOR_TABLE 32978
+#endif
+
+#ifndef GL_PROXY_COLOR_TABLE
+#define GL_PROXY_COLOR_TABLE 32979
+#endif
+
+#ifndef GL_PROXY_POST_CONVOLUTION_COLOR_TABLE
+#define GL_PROXY_POST_CONVOLUTION_COLOR_TABLE 32980
+#endif
+
+#ifndef GL_PROXY_POST_COLOR_MATRIX_COLOR_TABLE
+#define GL_PROXY_POST_COLOR_MATRIX_COLOR_TABLE 32981
+#endif
+
+#ifndef GL_COLOR_TABLE_SCALE
+#define GL_COLOR_TABLE_SCALE 32982
+#endif
+
+#ifndef GL_COLOR_TABLE_BIAS
+#define GL_COLOR_TABLE_BIAS 32983
+#endif
+
+#ifndef GL_COLOR_TABLE_FORMAT
+#define GL_COLOR_TABLE_FORMAT 32984
+#endif
+
+#ifndef GL_COLOR_TABLE_WIDTH
+#define GL_COLOR_TABLE_WIDTH 32985
+#endif
+
+#ifndef GL_COLOR_TABLE_RED_SIZE
+#define GL_COLOR_TABLE_RED_SIZE 32986
+#endif
+
+#ifndef GL_COLOR_TABLE_GREEN_SIZE
+#define GL_COLOR_TABLE_GREEN_SIZE 32987
+#endif
+
+#ifndef GL_COLOR_TABLE_BLUE_SIZE
+#define GL_COLOR_TABLE_BLUE_SIZE 32988
+#endif
+
+#ifndef GL_COLOR_TABLE_ALPHA_SIZE
+#define GL_COLOR_TABLE_ALPHA_SIZE 32989
+#endif
+
+#ifndef GL_COLOR_TABLE_LUMINANCE_SIZE
+#define GL_COLOR_TABLE_LUMINANCE_SIZE 32990
+#endif
+
+#ifndef GL_COLOR_TABLE_INTENSITY_SIZE
+#define GL_COLOR_TABLE_INTENSITY_SIZE 32991
+#endif
+
+#ifndef GL_CONVOLUTION_1D
+#define GL_CONVOLUTION_1D 32784
+#endif
+
+#ifndef GL_CONVOLUTION_2D
+#define GL_CONVOLUTION_2D 32785
+#endif
+
+#ifndef GL_SEPARABLE_2D
+#define GL_SEPARABLE_2D 32786
+#endif
+
+#ifndef GL_CONVOLUTION_BORDER_MODE
+#define GL_CONVOLUTION_BORDER_MODE 32787
+#endif
+
+#ifndef GL_CONVOLUTION_FILTER_SCALE
+#define GL_CONVOLUTION_FILTER_SCALE 32788
+#endif
+
+#ifndef GL_CONVOLUTION_FILTER_BIAS
+#define GL_CONVOLUTION_FILTER_BIAS 32789
+#endif
+
+#ifndef GL_REDUCE
+#define GL_REDUCE 32790
+#endif
+
+#ifndef GL_CONVOLUTION_FORMAT
+#define GL_CONVOLUTION_FORMAT 32791
+#endif
+
+#ifndef GL_CONVOLUTION_WIDTH
+#define GL_CONVOLUTION_WIDTH 32792
+#endif
+
+#ifndef GL_CONVOLUTION_HEIGHT
+#define GL_CONVOLUTION_HEIGHT 32793
+#endif
+
+#ifndef GL_MAX_CONVOLUTION_WIDTH
+#define GL_MAX_CONVOLUTION_WIDTH 32794
+#endif
+
+#ifndef GL_MAX_CONVOLUTION_HEIGHT
+#define GL_MAX_CONVOLUTION_HEIGHT 32795
+#endif
+
+#ifndef GL_CONVOLUTION_BORDER_COLOR
+#define GL_CONVOLUTION_BORDER_COLOR 33108
+#endif
+
+#ifndef GL_CONSTANT_BORDER
+#define GL_CONSTANT_BORDER 33105
+#endif
+
+#ifndef GL_REPLICATE_BORDER
+#define GL_REPLICATE_BORDER 33107
+#endif
+
+#ifndef GL_HISTOGRAM
+#define GL_HISTOGRAM 32804
+#endif
+
+#ifndef GL_PROXY_HISTOGRAM
+#define GL_PROXY_HISTOGRAM 32805
+#endif
+
+#ifndef GL_HISTOGRAM_WIDTH
+#define GL_HISTOGRAM_WIDTH 32806
+#endif
+
+#ifndef GL_HISTOGRAM_FORMAT
+#define GL_HISTOGRAM_FORMAT 32807
+#endif
+
+#ifndef GL_HISTOGRAM_RED_SIZE
+#define GL_HISTOGRAM_RED_SIZE 32808
+#endif
+
+#ifndef GL_HISTOGRAM_GREEN_SIZE
+#define GL_HISTOGRAM_GREEN_SIZE 32809
+#endif
+
+#ifndef GL_HISTOGRAM_BLUE_SIZE
+#define GL_HISTOGRAM_BLUE_SIZE 32810
+#endif
+
+#ifndef GL_HISTOGRAM_ALPHA_SIZE
+#define GL_HISTOGRAM_ALPHA_SIZE 32811
+#endif
+
+#ifndef GL_HISTOGRAM_LUMINANCE_SIZE
+#define GL_HISTOGRAM_LUMINANCE_SIZE 32812
+#endif
+
+#ifndef GL_HISTOGRAM_SINK
+#define GL_HISTOGRAM_SINK 32813
+#endif
+
+#ifndef GL_MINMAX
+#define GL_MINMAX 32814
+#endif
+
+#ifndef GL_MINMAX_FORMAT
+#define GL_MINMAX_FORMAT 32815
+#endif
+
+#ifndef GL_MINMAX_SINK
+#define GL_MINMAX_SINK 32816
+#endif
+
+#ifndef GL_TABLE_TOO_LARGE
+#define GL_TABLE_TOO_LARGE 32817
+#endif
+
 
 
 
@@ -3884,6 +4064,7 @@ void glSampleCoverage(GLclampf value, GLboolean invert);
 
 /*
  The 32 x 32 bitmap is unpacked with the GL_UNPACK_* modes of glPixelStore.
+ Compiled into display lists with its bytes and the unpack modes in force (§5.4).
 
  # Safety
  `mask` is NULL or points to the values the command reads.
@@ -4958,6 +5139,221 @@ void glAlphaFuncx(GLenum func, GLclampx reference);
 void glPolygonOffsetx(GLfixed factor, GLfixed units);
 
 void glSampleCoveragex(GLclampx value, GLboolean invert);
+
+/*
+ # Safety
+ `table` is NULL or points to the values the command reads.
+ */
+void glColorTable(GLenum target,
+                  GLenum internalformat,
+                  GLsizei width,
+                  GLenum format,
+                  GLenum ty,
+                  const void *table);
+
+/*
+ # Safety
+ `data` is NULL or points to the values the command reads.
+ */
+void glColorSubTable(GLenum target,
+                     GLsizei start,
+                     GLsizei count,
+                     GLenum format,
+                     GLenum ty,
+                     const void *data);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glColorTableParameterfv(GLenum target, GLenum pname, const GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glColorTableParameteriv(GLenum target, GLenum pname, const GLint *params);
+
+/*
+ Copies the empty framebuffer: (0, 0, 0, 0) pixels, then the table's scale and bias.
+ */
+void glCopyColorTable(GLenum target, GLenum internalformat, GLint _x, GLint _y, GLsizei width);
+
+/*
+ Copies the empty framebuffer: see glCopyColorTable.
+ */
+void glCopyColorSubTable(GLenum target, GLsizei start, GLint _x, GLint _y, GLsizei width);
+
+/*
+ # Safety
+ `table` is NULL or has room for the values the command writes.
+ */
+void glGetColorTable(GLenum target, GLenum format, GLenum ty, void *table);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetColorTableParameterfv(GLenum target, GLenum pname, GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetColorTableParameteriv(GLenum target, GLenum pname, GLint *params);
+
+/*
+ # Safety
+ `image` is NULL or points to the values the command reads.
+ */
+void glConvolutionFilter1D(GLenum target,
+                           GLenum internalformat,
+                           GLsizei width,
+                           GLenum format,
+                           GLenum ty,
+                           const void *image);
+
+/*
+ # Safety
+ `image` is NULL or points to the values the command reads.
+ */
+void glConvolutionFilter2D(GLenum target,
+                           GLenum internalformat,
+                           GLsizei width,
+                           GLsizei height,
+                           GLenum format,
+                           GLenum ty,
+                           const void *image);
+
+/*
+ # Safety
+ `row` is NULL or points to the values the command reads.
+ `column` is NULL or points to the values the command reads.
+ */
+void glSeparableFilter2D(GLenum target,
+                         GLenum internalformat,
+                         GLsizei width,
+                         GLsizei height,
+                         GLenum format,
+                         GLenum ty,
+                         const void *row,
+                         const void *column);
+
+/*
+ Copies the empty framebuffer: (0, 0, 0, 0) pixels, then the filter's scale and bias.
+ */
+void glCopyConvolutionFilter1D(GLenum target,
+                               GLenum internalformat,
+                               GLint _x,
+                               GLint _y,
+                               GLsizei width);
+
+/*
+ Copies the empty framebuffer: see glCopyConvolutionFilter1D.
+ */
+void glCopyConvolutionFilter2D(GLenum target,
+                               GLenum internalformat,
+                               GLint _x,
+                               GLint _y,
+                               GLsizei width,
+                               GLsizei height);
+
+void glConvolutionParameterf(GLenum target, GLenum pname, GLfloat param);
+
+void glConvolutionParameteri(GLenum target, GLenum pname, GLint param);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glConvolutionParameterfv(GLenum target, GLenum pname, const GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or points to the values the command reads.
+ */
+void glConvolutionParameteriv(GLenum target, GLenum pname, const GLint *params);
+
+/*
+ # Safety
+ `image` is NULL or has room for the values the command writes.
+ */
+void glGetConvolutionFilter(GLenum target, GLenum format, GLenum ty, void *image);
+
+/*
+ `span` is not used (as in GL 1.5).
+
+ # Safety
+ `row` is NULL or has room for the values the command writes.
+ `column` is NULL or has room for the values the command writes.
+ `_span` is NULL or has room for the values the command writes.
+ */
+void glGetSeparableFilter(GLenum target,
+                          GLenum format,
+                          GLenum ty,
+                          void *row,
+                          void *column,
+                          void *_span);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetConvolutionParameterfv(GLenum target, GLenum pname, GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetConvolutionParameteriv(GLenum target, GLenum pname, GLint *params);
+
+void glHistogram(GLenum target, GLsizei width, GLenum internalformat, GLboolean sink);
+
+void glResetHistogram(GLenum target);
+
+/*
+ Nothing is rasterized: the counts are those of the last reset, 0.
+
+ # Safety
+ `values` is NULL or has room for the values the command writes.
+ */
+void glGetHistogram(GLenum target, GLboolean reset, GLenum format, GLenum ty, void *values);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetHistogramParameterfv(GLenum target, GLenum pname, GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetHistogramParameteriv(GLenum target, GLenum pname, GLint *params);
+
+void glMinmax(GLenum target, GLenum internalformat, GLboolean sink);
+
+void glResetMinmax(GLenum target);
+
+/*
+ Nothing is rasterized: the minimum and maximum are those of the last reset.
+
+ # Safety
+ `values` is NULL or has room for the values the command writes.
+ */
+void glGetMinmax(GLenum target, GLboolean reset, GLenum format, GLenum ty, void *values);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetMinmaxParameterfv(GLenum target, GLenum pname, GLfloat *params);
+
+/*
+ # Safety
+ `params` is NULL or has room for the values the command writes.
+ */
+void glGetMinmaxParameteriv(GLenum target, GLenum pname, GLint *params);
 
 /*
  # Safety

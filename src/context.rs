@@ -104,6 +104,9 @@ pub struct Context {
     pub(crate) maps: crate::state::eval::Maps,
     /// The evaluator enables and grids (GL_EVAL_BIT).
     pub(crate) eval: crate::state::eval::EvalAttribs,
+    /// The imaging subset's images and results, and its modes (GL_PIXEL_MODE_BIT).
+    pub(crate) imaging: crate::state::imaging::Imaging,
+    pub(crate) imaging_modes: crate::state::imaging::ImagingModes,
 }
 
 impl Default for Context {
@@ -159,6 +162,8 @@ impl Context {
             lists: Default::default(),
             maps: Default::default(),
             eval: Default::default(),
+            imaging: Default::default(),
+            imaging_modes: Default::default(),
         }
     }
 

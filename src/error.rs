@@ -11,6 +11,8 @@ pub enum GlError {
     StackOverflow,
     StackUnderflow,
     OutOfMemory,
+    /// GL_TABLE_TOO_LARGE (the imaging subset, §3.6.3).
+    TableTooLarge,
 }
 
 impl GlError {
@@ -23,6 +25,7 @@ impl GlError {
             GlError::StackOverflow => GL_STACK_OVERFLOW,
             GlError::StackUnderflow => GL_STACK_UNDERFLOW,
             GlError::OutOfMemory => GL_OUT_OF_MEMORY,
+            GlError::TableTooLarge => GL_TABLE_TOO_LARGE,
         }
     }
 }

@@ -67,6 +67,19 @@ fn items() -> Vec<Item> {
         server(GL_CURRENT_BIT),
     );
     gets(&[GL_LIST_BASE], server(GL_LIST_BIT));
+    gets(
+        &[
+            GL_COLOR_TABLE,
+            GL_POST_CONVOLUTION_COLOR_TABLE,
+            GL_POST_COLOR_MATRIX_COLOR_TABLE,
+            GL_CONVOLUTION_1D,
+            GL_CONVOLUTION_2D,
+            GL_SEPARABLE_2D,
+            GL_HISTOGRAM,
+            GL_MINMAX,
+        ],
+        server(GL_PIXEL_MODE_BIT | GL_ENABLE_BIT),
+    );
     gets(&[GL_ACTIVE_TEXTURE], server(GL_TEXTURE_BIT));
     gets(&[GL_POINT_SIZE], server(GL_POINT_BIT));
     gets(&POINT_PNAMES, server(GL_POINT_BIT));
@@ -221,6 +234,29 @@ fn items() -> Vec<Item> {
     gets(&[GL_MODELVIEW_MATRIX, GL_PROJECTION_MATRIX], Bits::None);
     gets(&PIXEL_STORE_PNAMES, Bits::Client(GL_CLIENT_PIXEL_STORE_BIT));
     gets(&ARRAY_PNAMES, Bits::Client(GL_CLIENT_VERTEX_ARRAY_BIT));
+    items.push(Item {
+        name: "imaging scales, biases and borders".into(),
+        bits: server(GL_PIXEL_MODE_BIT),
+        read: Box::new(|ctx| {
+            let mut read = String::new();
+            for table in [GL_COLOR_TABLE, GL_POST_CONVOLUTION_COLOR_TABLE] {
+                for pname in [GL_COLOR_TABLE_SCALE, GL_COLOR_TABLE_BIAS] {
+                    read += &format!("{:?}", ctx.get_color_table_parameter(table, pname));
+                }
+            }
+            for filter in [GL_CONVOLUTION_1D, GL_SEPARABLE_2D] {
+                for pname in [
+                    GL_CONVOLUTION_BORDER_MODE,
+                    GL_CONVOLUTION_BORDER_COLOR,
+                    GL_CONVOLUTION_FILTER_SCALE,
+                    GL_CONVOLUTION_FILTER_BIAS,
+                ] {
+                    read += &format!("{:?}", ctx.get_convolution_parameter(filter, pname));
+                }
+            }
+            read
+        }),
+    });
     for light in 0..8 {
         let light = GL_LIGHT0 + light;
         items.push(get(light, server(GL_LIGHTING_BIT | GL_ENABLE_BIT)));
@@ -477,6 +513,25 @@ fn set_everything(ctx: &mut Context, k: u32) {
     ctx.fog_coord(f);
     ctx.index(2.0 * f);
     ctx.list_base(10 * k).unwrap();
+    for table in [GL_COLOR_TABLE, GL_POST_CONVOLUTION_COLOR_TABLE] {
+        ctx.color_table_parameter(table, GL_COLOR_TABLE_SCALE, &[f, 2.0, 3.0, 4.0])
+            .unwrap();
+        ctx.color_table_parameter(table, GL_COLOR_TABLE_BIAS, &[0.0, f, 0.5, 0.25])
+            .unwrap();
+    }
+    for filter in [GL_CONVOLUTION_1D, GL_SEPARABLE_2D] {
+        let mode = pick(GL_CONSTANT_BORDER, GL_REPLICATE_BORDER) as f32;
+        ctx.convolution_parameter(filter, GL_CONVOLUTION_BORDER_MODE, &[mode], false)
+            .unwrap();
+        for pname in [
+            GL_CONVOLUTION_BORDER_COLOR,
+            GL_CONVOLUTION_FILTER_SCALE,
+            GL_CONVOLUTION_FILTER_BIAS,
+        ] {
+            ctx.convolution_parameter(filter, pname, &[f, 0.5, 0.25, 1.0], true)
+                .unwrap();
+        }
+    }
     ctx.map_grid(1, [k as i32, 1], [f as f64, 3.0, 0.0, 1.0])
         .unwrap();
     ctx.map_grid(2, [k as i32, 2 * k as i32], [0.0, f as f64, -1.0, f as f64])

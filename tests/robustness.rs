@@ -409,6 +409,20 @@ const TEXTURE_UNITS: [GLenum; 8] = [
     GL_TEXTURE7,
 ];
 const TEX_GEN_COORDS: [GLenum; 4] = [GL_S, GL_T, GL_R, GL_Q];
+const PIXEL_FORMATS: [GLenum; 6] = [
+    GL_RGBA,
+    GL_RGB,
+    GL_LUMINANCE,
+    GL_DEPTH_COMPONENT,
+    GL_STENCIL_INDEX,
+    GL_COLOR_INDEX,
+];
+const TEXTURE_TARGETS: [GLenum; 4] = [
+    GL_TEXTURE_1D,
+    GL_TEXTURE_2D,
+    GL_TEXTURE_3D,
+    GL_TEXTURE_CUBE_MAP,
+];
 const MAP1_TARGETS: [GLenum; 9] = [
     GL_MAP1_COLOR_4,
     GL_MAP1_INDEX,
@@ -993,6 +1007,37 @@ enum Op {
         domain: [f64; 2],
     },
     EvalCoord2([f64; 2]),
+    TexImage2D {
+        target: GLenum,
+        level: i32,
+        internal: i32,
+        size: [i32; 2],
+        format: GLenum,
+        ty: GLenum,
+        bytes: Vec<u8>,
+    },
+    BindTexture {
+        target: GLenum,
+        name: u32,
+    },
+    DeleteTexture(u32),
+    DrawPixels {
+        size: [i32; 2],
+        format: GLenum,
+        ty: GLenum,
+    },
+    ReadPixels {
+        size: [i32; 2],
+        format: GLenum,
+        ty: GLenum,
+        room: usize,
+    },
+    ColorTable {
+        target: GLenum,
+        internal: GLenum,
+        width: i32,
+        bytes: Vec<u8>,
+    },
     EvalMesh1 {
         mode: GLenum,
         range: [i32; 2],
@@ -1281,6 +1326,26 @@ impl Op {
                     )
             }
             Op::MapGrid1 { segments, .. } => segments <= 0,
+            Op::TexImage2D {
+                target,
+                level,
+                size,
+                format,
+                ..
+            } => {
+                !valid(target, &[GL_TEXTURE_2D, GL_PROXY_TEXTURE_2D])
+                    || level < 0
+                    || size.iter().any(|&s| s < 0)
+                    || !valid(format, &PIXEL_FORMATS)
+            }
+            Op::BindTexture { target, .. } => !valid(target, &TEXTURE_TARGETS),
+            Op::DrawPixels { size, format, .. } | Op::ReadPixels { size, format, .. } => {
+                size.iter().any(|&s| s < 0) || !valid(format, &PIXEL_FORMATS)
+            }
+            Op::ColorTable { target, width, .. } => {
+                !(GL_COLOR_TABLE..=GL_PROXY_POST_COLOR_MATRIX_COLOR_TABLE).contains(&target)
+                    || width < 0
+            }
             Op::EvalMesh1 { mode, .. } => !valid(mode, &[GL_POINT, GL_LINE]),
             Op::MultiTexCoord { target, .. }
             | Op::ActiveTexture(target)
@@ -1666,7 +1731,46 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
                 segments: rng.range(-2, 20) as i32,
                 domain: [rng.double(f), rng.double(f)],
             },
-            7 => Op::EvalCoord2([rng.double(f), rng.double(f)]),
+            7 => match rng.below(7) {
+                0 => Op::EvalCoord2([rng.double(f), rng.double(f)]),
+                1 => {
+                    let bytes = rng.below(80);
+                    Op::TexImage2D {
+                        target: rng.enumeration(&[GL_TEXTURE_2D, GL_PROXY_TEXTURE_2D]),
+                        level: rng.range(-1, 4) as i32,
+                        internal: rng.pick(&[GL_RGBA, GL_RGB8, GL_LUMINANCE, 3, 0x1234]) as i32,
+                        size: [rng.range(-1, 5) as i32, rng.range(-1, 5) as i32],
+                        format: rng.enumeration(&PIXEL_FORMATS),
+                        ty: rng.enumeration(&[GL_UNSIGNED_BYTE, GL_FLOAT, GL_UNSIGNED_SHORT_5_6_5]),
+                        bytes: (0..bytes).map(|_| rng.below(256) as u8).collect(),
+                    }
+                }
+                2 => Op::BindTexture {
+                    target: rng.enumeration(&TEXTURE_TARGETS),
+                    name: rng.below(4) as u32,
+                },
+                3 => Op::DeleteTexture(rng.below(4) as u32),
+                4 => Op::DrawPixels {
+                    size: [rng.range(-1, 5) as i32, rng.range(-1, 5) as i32],
+                    format: rng.enumeration(&PIXEL_FORMATS),
+                    ty: rng.enumeration(&[GL_UNSIGNED_BYTE, GL_FLOAT, GL_BITMAP]),
+                },
+                5 => Op::ReadPixels {
+                    size: [rng.range(-1, 5) as i32, rng.range(-1, 5) as i32],
+                    format: rng.enumeration(&PIXEL_FORMATS),
+                    ty: rng.enumeration(&[GL_UNSIGNED_BYTE, GL_FLOAT, GL_UNSIGNED_INT_8_8_8_8]),
+                    room: rng.below(200),
+                },
+                _ => {
+                    let bytes = rng.below(40);
+                    Op::ColorTable {
+                        target: rng.enumeration(&[GL_COLOR_TABLE, GL_PROXY_COLOR_TABLE]),
+                        internal: rng.pick(&[GL_RGBA, GL_LUMINANCE8, GL_DEPTH_COMPONENT]),
+                        width: rng.range(-1, 9) as i32,
+                        bytes: (0..bytes).map(|_| rng.below(256) as u8).collect(),
+                    }
+                }
+            },
             8 => Op::EvalMesh1 {
                 mode: rng.enumeration(&[GL_POINT, GL_LINE]),
                 range: [rng.range(-3, 10) as i32, rng.range(-3, 10) as i32],
@@ -2002,6 +2106,51 @@ fn apply(
             ctx.eval_coord(2, *u, *v);
             Ok(())
         }
+        Op::TexImage2D {
+            target,
+            level,
+            internal,
+            size,
+            format,
+            ty,
+            bytes,
+        } => {
+            let args = fflight::commands::texture::TexImageArgs {
+                target: *target,
+                level: *level,
+                internal_format: *internal,
+                size: [size[0], size[1], 1],
+                border: 0,
+                format: *format,
+                ty: *ty,
+            };
+            // Only as many bytes as the image takes, or none (a NULL pointer).
+            let span = ctx.tex_image_span(2, &args);
+            ctx.tex_image(2, &args, if bytes.len() >= span { bytes } else { &[] })
+        }
+        Op::BindTexture { target, name } => ctx.bind_texture(*target, *name),
+        Op::DeleteTexture(name) => ctx.delete_textures(1, &[*name]),
+        Op::DrawPixels { size, format, ty } => ctx.draw_pixels(size[0], size[1], *format, *ty),
+        Op::ReadPixels {
+            size,
+            format,
+            ty,
+            room,
+        } => {
+            let mut out = vec![0xA5u8; *room + 16];
+            // `room` bytes, then a guard zone that must stay as it is.
+            let result = ctx.read_pixels(*size, *format, *ty, &mut out[..*room]);
+            if out[*room..].iter().any(|&b| b != 0xA5) {
+                check = Err("glReadPixels wrote past its buffer".into());
+            }
+            result
+        }
+        Op::ColorTable {
+            target,
+            internal,
+            width,
+            bytes,
+        } => ctx.color_table(*target, *internal, *width, GL_RGBA, GL_UNSIGNED_BYTE, bytes),
         Op::EvalMesh1 { mode, range } => ctx.eval_mesh1(*mode, range[0], range[1]),
         Op::ClientActiveTexture(texture) => ctx.client_active_texture(*texture),
         Op::EdgeFlag(e) => {

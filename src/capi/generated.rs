@@ -765,6 +765,7 @@ pub extern "C" fn glSampleCoverage(value: GLclampf, invert: GLboolean) {
 }
 
 /// The 32 x 32 bitmap is unpacked with the GL_UNPACK_* modes of glPixelStore.
+/// Compiled into display lists with its bytes and the unpack modes in force (§5.4).
 ///
 /// # Safety
 /// `mask` is NULL or points to the values the command reads.
@@ -773,7 +774,7 @@ pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
         let mask = unsafe { read(mask, ctx.polygon_stipple_unpack_span()) };
-        ctx.polygon_stipple(mask)
+        ctx.run_image_command(crate::commands::list::ImageCommand::PolygonStipple, mask)
     })
 }
 
@@ -3567,6 +3568,394 @@ pub extern "C" fn glSampleCoveragex(value: GLclampx, invert: GLboolean) {
     })
 }
 
+/// # Safety
+/// `table` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColorTable(target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, ty: GLenum, table: *const c_void) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let table = unsafe { read(table.cast::<u8>(), ctx.imaging_span(false, format, ty, [width, 1])) };
+        if ctx.record(|| TableCommand::glColorTable { target, internalformat, width, format, ty, table: table.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.color_table(target, internalformat, width, format, ty, table)
+    })
+}
+
+/// # Safety
+/// `data` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColorSubTable(target: GLenum, start: GLsizei, count: GLsizei, format: GLenum, ty: GLenum, data: *const c_void) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let data = unsafe { read(data.cast::<u8>(), ctx.imaging_span(false, format, ty, [count, 1])) };
+        if ctx.record(|| TableCommand::glColorSubTable { target, start, count, format, ty, data: data.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.color_sub_table(target, start, count, Some((format, ty, data)))
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColorTableParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, 4) };
+        if ctx.record(|| TableCommand::glColorTableParameterfv { target, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.color_table_parameter(target, pname, params)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glColorTableParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, 4) };
+        if ctx.record(|| TableCommand::glColorTableParameteriv { target, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.color_table_parameter(target, pname, &params.iter().map(|&v| v as f32).collect::<Vec<_>>())
+    })
+}
+
+/// Copies the empty framebuffer: (0, 0, 0, 0) pixels, then the table's scale and bias.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyColorTable(target: GLenum, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glCopyColorTable { target, internalformat, _x, _y, width }.into()) {
+            return Ok(());
+        }
+        ctx.copy_color_table(target, internalformat, width)
+    })
+}
+
+/// Copies the empty framebuffer: see glCopyColorTable.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyColorSubTable(target: GLenum, start: GLsizei, _x: GLint, _y: GLint, width: GLsizei) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glCopyColorSubTable { target, start, _x, _y, width }.into()) {
+            return Ok(());
+        }
+        ctx.color_sub_table(target, start, width, None)
+    })
+}
+
+/// # Safety
+/// `table` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetColorTable(target: GLenum, format: GLenum, ty: GLenum, table: *mut c_void) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let table = unsafe { read_mut(table.cast::<u8>(), ctx.color_table_pack_span(target, format, ty)) };
+        ctx.get_color_table(target, format, ty, table)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetColorTableParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+    with_context(|ctx| {
+        let written = ctx.get_color_table_parameter(target, pname).map(|v| v.as_floats())?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetColorTableParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_color_table_parameter(target, pname).map(|v| v.as_ints())?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `image` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glConvolutionFilter1D(target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, ty: GLenum, image: *const c_void) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let image = unsafe { read(image.cast::<u8>(), ctx.imaging_span(false, format, ty, [width, 1])) };
+        if ctx.record(|| TableCommand::glConvolutionFilter1D { target, internalformat, width, format, ty, image: image.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.convolution_filter(target, internalformat, [width, 1], Some((format, ty, image)), None)
+    })
+}
+
+/// # Safety
+/// `image` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glConvolutionFilter2D(target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei, format: GLenum, ty: GLenum, image: *const c_void) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let image = unsafe { read(image.cast::<u8>(), ctx.imaging_span(false, format, ty, [width, height])) };
+        if ctx.record(|| TableCommand::glConvolutionFilter2D { target, internalformat, width, height, format, ty, image: image.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.convolution_filter(target, internalformat, [width, height], Some((format, ty, image)), None)
+    })
+}
+
+/// # Safety
+/// `row` is NULL or points to the values the command reads.
+/// `column` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glSeparableFilter2D(target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei, format: GLenum, ty: GLenum, row: *const c_void, column: *const c_void) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let row = unsafe { read(row.cast::<u8>(), ctx.imaging_span(false, format, ty, [width, 1])) };
+        // SAFETY: the caller's guarantee, forwarded.
+        let column = unsafe { read(column.cast::<u8>(), ctx.imaging_span(false, format, ty, [height, 1])) };
+        if ctx.record(|| TableCommand::glSeparableFilter2D { target, internalformat, width, height, format, ty, row: row.to_vec(), column: column.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.convolution_filter(target, internalformat, [width, height], Some((format, ty, row)), Some(column))
+    })
+}
+
+/// Copies the empty framebuffer: (0, 0, 0, 0) pixels, then the filter's scale and bias.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyConvolutionFilter1D(target: GLenum, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glCopyConvolutionFilter1D { target, internalformat, _x, _y, width }.into()) {
+            return Ok(());
+        }
+        ctx.convolution_filter(target, internalformat, [width, 1], None, None)
+    })
+}
+
+/// Copies the empty framebuffer: see glCopyConvolutionFilter1D.
+#[unsafe(no_mangle)]
+pub extern "C" fn glCopyConvolutionFilter2D(target: GLenum, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glCopyConvolutionFilter2D { target, internalformat, _x, _y, width, height }.into()) {
+            return Ok(());
+        }
+        ctx.convolution_filter(target, internalformat, [width, height], None, None)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glConvolutionParameterf(target: GLenum, pname: GLenum, param: GLfloat) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glConvolutionParameterf { target, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.convolution_parameter(target, pname, &[param], false)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glConvolutionParameteri(target: GLenum, pname: GLenum, param: GLint) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glConvolutionParameteri { target, pname, param }.into()) {
+            return Ok(());
+        }
+        ctx.convolution_parameter(target, pname, &[param as f32], false)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glConvolutionParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, if pname == GL_CONVOLUTION_BORDER_MODE { 1 } else { 4 }) };
+        if ctx.record(|| TableCommand::glConvolutionParameterfv { target, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.convolution_parameter(target, pname, params, true)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or points to the values the command reads.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glConvolutionParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let params = unsafe { read(params, if pname == GL_CONVOLUTION_BORDER_MODE { 1 } else { 4 }) };
+        if ctx.record(|| TableCommand::glConvolutionParameteriv { target, pname, params: params.to_vec() }.into()) {
+            return Ok(());
+        }
+        ctx.convolution_parameter(target, pname, &params.iter().map(|&v| v as f32).collect::<Vec<_>>(), true)
+    })
+}
+
+/// # Safety
+/// `image` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetConvolutionFilter(target: GLenum, format: GLenum, ty: GLenum, image: *mut c_void) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let image = unsafe { read_mut(image.cast::<u8>(), ctx.filter_pack_span(target, format, ty, 0)) };
+        ctx.get_convolution_filter(target, format, ty, image)
+    })
+}
+
+/// `span` is not used (as in GL 1.5).
+///
+/// # Safety
+/// `row` is NULL or has room for the values the command writes.
+/// `column` is NULL or has room for the values the command writes.
+/// `_span` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetSeparableFilter(target: GLenum, format: GLenum, ty: GLenum, row: *mut c_void, column: *mut c_void, _span: *mut c_void) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let row = unsafe { read_mut(row.cast::<u8>(), ctx.filter_pack_span(target, format, ty, 1)) };
+        // SAFETY: the caller's guarantee, forwarded.
+        let column = unsafe { read_mut(column.cast::<u8>(), ctx.filter_pack_span(target, format, ty, 2)) };
+        // SAFETY: the caller's guarantee, forwarded.
+        let _span = unsafe { read_mut(_span.cast::<u8>(), 0) };
+        ctx.get_separable_filter(target, format, ty, row, column)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetConvolutionParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+    with_context(|ctx| {
+        let written = ctx.get_convolution_parameter(target, pname).map(|v| v.as_floats())?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetConvolutionParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_convolution_parameter(target, pname).map(|v| v.as_ints())?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glHistogram(target: GLenum, width: GLsizei, internalformat: GLenum, sink: GLboolean) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glHistogram { target, width, internalformat, sink }.into()) {
+            return Ok(());
+        }
+        ctx.histogram(target, width, internalformat, sink != GL_FALSE)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glResetHistogram(target: GLenum) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glResetHistogram { target }.into()) {
+            return Ok(());
+        }
+        ctx.reset_histogram(target)
+    })
+}
+
+/// Nothing is rasterized: the counts are those of the last reset, 0.
+///
+/// # Safety
+/// `values` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetHistogram(target: GLenum, reset: GLboolean, format: GLenum, ty: GLenum, values: *mut c_void) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let values = unsafe { read_mut(values.cast::<u8>(), ctx.histogram_pack_span(format, ty)) };
+        ctx.get_histogram(target, reset != GL_FALSE, format, ty, values)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetHistogramParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+    with_context(|ctx| {
+        let written = ctx.get_histogram_parameter(target, pname).map(|v| v.as_floats())?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetHistogramParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_histogram_parameter(target, pname).map(|v| v.as_ints())?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glMinmax(target: GLenum, internalformat: GLenum, sink: GLboolean) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glMinmax { target, internalformat, sink }.into()) {
+            return Ok(());
+        }
+        ctx.minmax(target, internalformat, sink != GL_FALSE)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn glResetMinmax(target: GLenum) {
+    with_context(|ctx| {
+        if ctx.record(|| TableCommand::glResetMinmax { target }.into()) {
+            return Ok(());
+        }
+        ctx.reset_minmax(target)
+    })
+}
+
+/// Nothing is rasterized: the minimum and maximum are those of the last reset.
+///
+/// # Safety
+/// `values` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetMinmax(target: GLenum, reset: GLboolean, format: GLenum, ty: GLenum, values: *mut c_void) {
+    with_context(|ctx| {
+        // SAFETY: the caller's guarantee, forwarded.
+        let values = unsafe { read_mut(values.cast::<u8>(), ctx.imaging_span(true, format, ty, [2, 1])) };
+        ctx.get_minmax(target, reset != GL_FALSE, format, ty, values)
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetMinmaxParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+    with_context(|ctx| {
+        let written = ctx.get_minmax_parameter(target, pname).map(|v| v.as_floats())?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
+/// # Safety
+/// `params` is NULL or has room for the values the command writes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn glGetMinmaxParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
+    with_context(|ctx| {
+        let written = ctx.get_minmax_parameter(target, pname).map(|v| v.as_ints())?;
+        // SAFETY: the caller's guarantee, forwarded.
+        unsafe { write(params, &written[..]) }
+    })
+}
+
 /// A command of the table compiled into a display list: its parameters, and a copy of the
 /// values its pointers gave at compile time.
 #[allow(non_camel_case_types)]
@@ -3839,6 +4228,25 @@ pub enum TableCommand {
     glAlphaFuncx { func: GLenum, reference: GLclampx },
     glPolygonOffsetx { factor: GLfixed, units: GLfixed },
     glSampleCoveragex { value: GLclampx, invert: GLboolean },
+    glColorTable { target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, ty: GLenum, table: Vec<u8> },
+    glColorSubTable { target: GLenum, start: GLsizei, count: GLsizei, format: GLenum, ty: GLenum, data: Vec<u8> },
+    glColorTableParameterfv { target: GLenum, pname: GLenum, params: Vec<GLfloat> },
+    glColorTableParameteriv { target: GLenum, pname: GLenum, params: Vec<GLint> },
+    glCopyColorTable { target: GLenum, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei },
+    glCopyColorSubTable { target: GLenum, start: GLsizei, _x: GLint, _y: GLint, width: GLsizei },
+    glConvolutionFilter1D { target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, ty: GLenum, image: Vec<u8> },
+    glConvolutionFilter2D { target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei, format: GLenum, ty: GLenum, image: Vec<u8> },
+    glSeparableFilter2D { target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei, format: GLenum, ty: GLenum, row: Vec<u8>, column: Vec<u8> },
+    glCopyConvolutionFilter1D { target: GLenum, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei },
+    glCopyConvolutionFilter2D { target: GLenum, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei },
+    glConvolutionParameterf { target: GLenum, pname: GLenum, param: GLfloat },
+    glConvolutionParameteri { target: GLenum, pname: GLenum, param: GLint },
+    glConvolutionParameterfv { target: GLenum, pname: GLenum, params: Vec<GLfloat> },
+    glConvolutionParameteriv { target: GLenum, pname: GLenum, params: Vec<GLint> },
+    glHistogram { target: GLenum, width: GLsizei, internalformat: GLenum, sink: GLboolean },
+    glResetHistogram { target: GLenum },
+    glMinmax { target: GLenum, internalformat: GLenum, sink: GLboolean },
+    glResetMinmax { target: GLenum },
 }
 
 impl TableCommand {
@@ -5300,6 +5708,144 @@ impl TableCommand {
                 let value = *value;
                 let invert = *invert;
                 ctx.sample_coverage(fixed(value), invert != GL_FALSE)
+            }
+            TableCommand::glColorTable { target, internalformat, width, format, ty, table } => {
+                let target = *target;
+                let internalformat = *internalformat;
+                let width = *width;
+                let format = *format;
+                let ty = *ty;
+                let table = &table[..];
+                ctx.color_table(target, internalformat, width, format, ty, table)
+            }
+            TableCommand::glColorSubTable { target, start, count, format, ty, data } => {
+                let target = *target;
+                let start = *start;
+                let count = *count;
+                let format = *format;
+                let ty = *ty;
+                let data = &data[..];
+                ctx.color_sub_table(target, start, count, Some((format, ty, data)))
+            }
+            TableCommand::glColorTableParameterfv { target, pname, params } => {
+                let target = *target;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.color_table_parameter(target, pname, params)
+            }
+            TableCommand::glColorTableParameteriv { target, pname, params } => {
+                let target = *target;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.color_table_parameter(target, pname, &params.iter().map(|&v| v as f32).collect::<Vec<_>>())
+            }
+            TableCommand::glCopyColorTable { target, internalformat, _x, _y, width } => {
+                let target = *target;
+                let internalformat = *internalformat;
+                let _x = *_x;
+                let _y = *_y;
+                let width = *width;
+                ctx.copy_color_table(target, internalformat, width)
+            }
+            TableCommand::glCopyColorSubTable { target, start, _x, _y, width } => {
+                let target = *target;
+                let start = *start;
+                let _x = *_x;
+                let _y = *_y;
+                let width = *width;
+                ctx.color_sub_table(target, start, width, None)
+            }
+            TableCommand::glConvolutionFilter1D { target, internalformat, width, format, ty, image } => {
+                let target = *target;
+                let internalformat = *internalformat;
+                let width = *width;
+                let format = *format;
+                let ty = *ty;
+                let image = &image[..];
+                ctx.convolution_filter(target, internalformat, [width, 1], Some((format, ty, image)), None)
+            }
+            TableCommand::glConvolutionFilter2D { target, internalformat, width, height, format, ty, image } => {
+                let target = *target;
+                let internalformat = *internalformat;
+                let width = *width;
+                let height = *height;
+                let format = *format;
+                let ty = *ty;
+                let image = &image[..];
+                ctx.convolution_filter(target, internalformat, [width, height], Some((format, ty, image)), None)
+            }
+            TableCommand::glSeparableFilter2D { target, internalformat, width, height, format, ty, row, column } => {
+                let target = *target;
+                let internalformat = *internalformat;
+                let width = *width;
+                let height = *height;
+                let format = *format;
+                let ty = *ty;
+                let row = &row[..];
+                let column = &column[..];
+                ctx.convolution_filter(target, internalformat, [width, height], Some((format, ty, row)), Some(column))
+            }
+            TableCommand::glCopyConvolutionFilter1D { target, internalformat, _x, _y, width } => {
+                let target = *target;
+                let internalformat = *internalformat;
+                let _x = *_x;
+                let _y = *_y;
+                let width = *width;
+                ctx.convolution_filter(target, internalformat, [width, 1], None, None)
+            }
+            TableCommand::glCopyConvolutionFilter2D { target, internalformat, _x, _y, width, height } => {
+                let target = *target;
+                let internalformat = *internalformat;
+                let _x = *_x;
+                let _y = *_y;
+                let width = *width;
+                let height = *height;
+                ctx.convolution_filter(target, internalformat, [width, height], None, None)
+            }
+            TableCommand::glConvolutionParameterf { target, pname, param } => {
+                let target = *target;
+                let pname = *pname;
+                let param = *param;
+                ctx.convolution_parameter(target, pname, &[param], false)
+            }
+            TableCommand::glConvolutionParameteri { target, pname, param } => {
+                let target = *target;
+                let pname = *pname;
+                let param = *param;
+                ctx.convolution_parameter(target, pname, &[param as f32], false)
+            }
+            TableCommand::glConvolutionParameterfv { target, pname, params } => {
+                let target = *target;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.convolution_parameter(target, pname, params, true)
+            }
+            TableCommand::glConvolutionParameteriv { target, pname, params } => {
+                let target = *target;
+                let pname = *pname;
+                let params = &params[..];
+                ctx.convolution_parameter(target, pname, &params.iter().map(|&v| v as f32).collect::<Vec<_>>(), true)
+            }
+            TableCommand::glHistogram { target, width, internalformat, sink } => {
+                let target = *target;
+                let width = *width;
+                let internalformat = *internalformat;
+                let sink = *sink;
+                ctx.histogram(target, width, internalformat, sink != GL_FALSE)
+            }
+            TableCommand::glResetHistogram { target } => {
+                let target = *target;
+                ctx.reset_histogram(target)
+            }
+            TableCommand::glMinmax { target, internalformat, sink } => {
+                let target = *target;
+                let internalformat = *internalformat;
+                let sink = *sink;
+                ctx.minmax(target, internalformat, sink != GL_FALSE)
+            }
+            TableCommand::glResetMinmax { target } => {
+                let target = *target;
+                ctx.reset_minmax(target)
             }
         }
     }

@@ -4,6 +4,7 @@
 use std::ffi::c_void;
 
 use super::{read, read_mut, with_context};
+use crate::commands::list::ImageCommand;
 use crate::commands::texture::{SubImageArgs, TexImageArgs};
 use crate::gl::*;
 
@@ -15,7 +16,7 @@ unsafe fn tex_image(dimensions: usize, args: TexImageArgs, pixels: *const c_void
         let span = ctx.tex_image_span(dimensions, &args);
         // SAFETY: the caller's guarantee, forwarded.
         let pixels = unsafe { read(pixels.cast::<u8>(), span) };
-        ctx.tex_image(dimensions, &args, pixels)
+        ctx.run_image_command(ImageCommand::TexImage(dimensions, args), pixels)
     })
 }
 
@@ -26,7 +27,7 @@ unsafe fn tex_sub_image(dimensions: usize, args: SubImageArgs, pixels: *const c_
         let span = ctx.tex_sub_image_span(dimensions, &args);
         // SAFETY: the caller's guarantee, forwarded.
         let pixels = unsafe { read(pixels.cast::<u8>(), span) };
-        ctx.tex_sub_image(dimensions, &args, pixels)
+        ctx.run_image_command(ImageCommand::TexSubImage(dimensions, args), pixels)
     })
 }
 

@@ -21,6 +21,7 @@ use crate::state::fragment::{
     StencilBufferAttribs,
 };
 use crate::state::hints::HintAttribs;
+use crate::state::imaging::ImagingModes;
 use crate::state::light::{Light, MAX_LIGHTS};
 use crate::state::light_model::LightModel;
 use crate::state::material::{ColorMaterial, Material};
@@ -102,6 +103,14 @@ pub const ENABLE_BIT_CAPABILITIES: &[GLenum] = &[
     GL_POLYGON_OFFSET_POINT,
     GL_POLYGON_OFFSET_LINE,
     GL_POLYGON_OFFSET_FILL,
+    GL_COLOR_TABLE,
+    GL_POST_CONVOLUTION_COLOR_TABLE,
+    GL_POST_COLOR_MATRIX_COLOR_TABLE,
+    GL_CONVOLUTION_1D,
+    GL_CONVOLUTION_2D,
+    GL_SEPARABLE_2D,
+    GL_HISTOGRAM,
+    GL_MINMAX,
     GL_MULTISAMPLE,
     GL_SAMPLE_ALPHA_TO_COVERAGE,
     GL_SAMPLE_ALPHA_TO_ONE,
@@ -169,7 +178,7 @@ attribute_groups! {
     },
     GL_POLYGON_STIPPLE_BIT => PolygonStipple { polygon_stipple: PolygonStippleAttribs },
     // The pixel maps are in no group (table 6.25).
-    GL_PIXEL_MODE_BIT => PixelMode { pixel_mode: PixelModeAttribs },
+    GL_PIXEL_MODE_BIT => PixelMode { pixel_mode: PixelModeAttribs, imaging_modes: ImagingModes },
     GL_LIGHTING_BIT => Lighting {
         lights: [Light; MAX_LIGHTS],
         materials: [Material; 2],

@@ -43,6 +43,16 @@ macro_rules! group_flag {
             }
             GL_SAMPLE_ALPHA_TO_ONE => Some($($borrow)+ $ctx.multisample.sample_alpha_to_one),
             GL_SAMPLE_COVERAGE => Some($($borrow)+ $ctx.multisample.sample_coverage),
+            GL_COLOR_TABLE..=GL_POST_COLOR_MATRIX_COLOR_TABLE => {
+                let index = ($cap - GL_COLOR_TABLE) as usize;
+                Some($($borrow)+ $ctx.imaging_modes.tables_enabled[index])
+            }
+            GL_CONVOLUTION_1D..=GL_SEPARABLE_2D => {
+                let index = ($cap - GL_CONVOLUTION_1D) as usize;
+                Some($($borrow)+ $ctx.imaging_modes.convolutions_enabled[index])
+            }
+            GL_HISTOGRAM => Some($($borrow)+ $ctx.imaging_modes.histogram_enabled),
+            GL_MINMAX => Some($($borrow)+ $ctx.imaging_modes.minmax_enabled),
             // The active texture unit's.
             GL_TEXTURE_1D | GL_TEXTURE_2D | GL_TEXTURE_3D | GL_TEXTURE_CUBE_MAP => {
                 let unit = $ctx.textures.active_unit;

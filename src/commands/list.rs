@@ -17,9 +17,11 @@ use glam::{Vec3, Vec4};
 
 pub use crate::capi::TableCommand;
 use crate::commands::arrays::{ArrayElementValues, RecordedDraw};
+use crate::commands::texture::{SubImageArgs, TexImageArgs};
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
+use crate::state::pixel::PixelStoreModes;
 
 /// GL_MAX_LIST_NESTING (Mesa's value): calls nested deeper are ignored.
 pub const MAX_LIST_NESTING: usize = 64;
@@ -45,6 +47,56 @@ pub enum Command {
     ArrayElement(ArrayElementValues),
     /// glDrawArrays, glDrawElements, glDrawRangeElements: the elements, read at compile time.
     Draw(Box<RecordedDraw>),
+    /// glTexImage, glTexSubImage, glPolygonStipple: the image's bytes and the unpack modes in
+    /// force at compile time, so it unpacks as it would have then (§5.4).
+    Image(Box<RecordedImage>),
+}
+
+/// An image command of a display list.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ImageCommand {
+    TexImage(usize, TexImageArgs),
+    TexSubImage(usize, SubImageArgs),
+    PolygonStipple,
+}
+
+/// An image command with its client bytes and the unpack modes they were given under.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RecordedImage {
+    pub command: ImageCommand,
+    pub unpack: PixelStoreModes,
+    pub bytes: Vec<u8>,
+}
+
+impl ImageCommand {
+    /// Runs the command on `bytes` with the current unpack modes.
+    pub fn run(&self, ctx: &mut Context, bytes: &[u8]) -> GlResult {
+        match self {
+            ImageCommand::TexImage(dimensions, args) => ctx.tex_image(*dimensions, args, bytes),
+            ImageCommand::TexSubImage(dimensions, args) => {
+                ctx.tex_sub_image(*dimensions, args, bytes)
+            }
+            ImageCommand::PolygonStipple => ctx.polygon_stipple(bytes),
+        }
+    }
+}
+
+impl Context {
+    /// Runs an image command now, or records it with a copy of `bytes` and the unpack modes
+    /// while a list is being compiled.
+    pub fn run_image_command(&mut self, command: ImageCommand, bytes: &[u8]) -> GlResult {
+        let unpack = self.pixel_store.unpack.clone();
+        if self.record(|| {
+            Command::Image(Box::new(RecordedImage {
+                command: command.clone(),
+                unpack,
+                bytes: bytes.to_vec(),
+            }))
+        }) {
+            return Ok(());
+        }
+        command.run(self, bytes)
+    }
 }
 
 impl From<TableCommand> for Command {
@@ -89,6 +141,12 @@ impl Command {
                 Ok(())
             }
             Command::Draw(draw) => ctx.draw_recorded(draw),
+            Command::Image(image) => {
+                let current = std::mem::replace(&mut ctx.pixel_store.unpack, image.unpack.clone());
+                let result = image.command.run(ctx, &image.bytes);
+                ctx.pixel_store.unpack = current;
+                result
+            }
         }
     }
 }

@@ -7,6 +7,7 @@ pub mod capture;
 pub mod eval;
 pub mod feedback;
 pub mod fragment;
+pub mod imaging;
 pub mod lighting;
 pub mod list;
 pub mod matrix;

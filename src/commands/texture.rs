@@ -88,7 +88,7 @@ fn image_size(dimensions: usize, size: [GLsizei; 3]) -> [GLsizei; 3] {
 }
 
 /// The arguments of glTexImage1D/2D/3D.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TexImageArgs {
     pub target: GLenum,
     pub level: GLint,
@@ -101,7 +101,7 @@ pub struct TexImageArgs {
 }
 
 /// The arguments of glTexSubImage1D/2D/3D and glCopyTexSubImage (format and type unused).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SubImageArgs {
     pub target: GLenum,
     pub level: GLint,

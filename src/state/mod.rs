@@ -8,6 +8,7 @@ pub mod eval;
 pub mod fog;
 pub mod fragment;
 pub mod hints;
+pub mod imaging;
 pub mod light;
 pub mod light_model;
 pub mod material;

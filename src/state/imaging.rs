@@ -1,0 +1,239 @@
+//! The imaging subset (§3.6.2-3.6.3, §3.6.5, §6.1.7-6.1.9): color tables, convolution
+//! filters, histogram and minmax. Kept, validated and queried; no pixel rectangle reaches
+//! them (nothing is rasterized), so the histogram counts and the minmax values stay as the
+//! last reset left them.
+
+use crate::error::{GlError, GlResult};
+use crate::gl::*;
+use crate::state::texture_image::{Base, ComponentSizes, TexImage, internal_format};
+
+/// The widest color table (Mesa's MAX_COLOR_TABLE_SIZE) and histogram.
+pub const MAX_COLOR_TABLE_WIDTH: usize = 256;
+/// GL_MAX_CONVOLUTION_WIDTH and GL_MAX_CONVOLUTION_HEIGHT (Mesa's).
+pub const MAX_CONVOLUTION_SIZE: usize = 9;
+
+/// The color table targets, in order; their proxies follow them by 3 in the enum values.
+pub const COLOR_TABLES: [GLenum; 3] = [
+    GL_COLOR_TABLE,
+    GL_POST_CONVOLUTION_COLOR_TABLE,
+    GL_POST_COLOR_MATRIX_COLOR_TABLE,
+];
+/// The convolution targets, in order.
+pub const CONVOLUTIONS: [GLenum; 3] = [GL_CONVOLUTION_1D, GL_CONVOLUTION_2D, GL_SEPARABLE_2D];
+
+/// An image of RGBA entries in an internal format (a color table, a filter, a histogram's
+/// format): each entry as the internal format keeps it (`TexImage::store`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Entries {
+    pub internal_format: GLenum,
+    pub base: Base,
+    pub sizes: ComponentSizes,
+    pub size: [usize; 2],
+    pub values: Vec<[f32; 4]>,
+}
+
+impl Entries {
+    fn empty(internal_format: GLenum) -> Entries {
+        let (base, _) = internal_format_of(internal_format as GLint, false).expect("valid");
+        Entries {
+            internal_format,
+            base,
+            sizes: [0; 7],
+            size: [0, 0],
+            values: Vec::new(),
+        }
+    }
+
+    /// Entries of `internal_format` and `size` from RGBA colors.
+    pub fn new(
+        internal_format: GLenum,
+        (base, sizes): (Base, ComponentSizes),
+        size: [usize; 2],
+        colors: &[[f32; 4]],
+    ) -> Entries {
+        Entries {
+            internal_format,
+            base,
+            sizes,
+            size,
+            values: colors
+                .iter()
+                .map(|&c| TexImage::store(base, &sizes, c))
+                .collect(),
+        }
+    }
+
+    /// Entry `i` as the RGBA color the queries pack (table 6.1's conversion of a texture
+    /// image: luminance in R).
+    pub fn rgba(&self, i: usize) -> [f32; 4] {
+        let [r, g, b, a] = self.values[i];
+        match self.base {
+            Base::Alpha => [0.0, 0.0, 0.0, a],
+            Base::Luminance | Base::Intensity => [r, 0.0, 0.0, 1.0],
+            Base::LuminanceAlpha => [r, 0.0, 0.0, a],
+            Base::Rgb => [r, g, b, 1.0],
+            _ => [r, g, b, a],
+        }
+    }
+
+    /// GL_*_RED_SIZE ... GL_*_INTENSITY_SIZE (`k` 0 to 5).
+    pub fn component_size(&self, k: usize) -> i32 {
+        i32::from(self.sizes[k])
+    }
+}
+
+/// An internal format the imaging commands accept (the color ones of table 3.16), with its
+/// base and resolutions; `intensity` says whether GL_INTENSITY* is allowed (not for
+/// histograms and minmax). GL_INVALID_ENUM otherwise.
+pub fn internal_format_of(format: GLint, histogram: bool) -> GlResult<(Base, ComponentSizes)> {
+    match internal_format(format) {
+        Some((Base::Depth, _)) | None => Err(GlError::InvalidEnum),
+        Some((Base::Intensity, _)) if histogram => Err(GlError::InvalidEnum),
+        Some(found) => Ok(found),
+    }
+}
+
+/// One color table: its entries and its scale and bias (GL_COLOR_TABLE_SCALE, _BIAS).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ColorTable {
+    pub entries: Entries,
+}
+
+impl Default for ColorTable {
+    fn default() -> ColorTable {
+        ColorTable {
+            entries: Entries::empty(GL_RGBA),
+        }
+    }
+}
+
+/// A convolution filter: its entries (a separable filter's row, then its column).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Filter {
+    pub entries: Entries,
+    pub column: Vec<[f32; 4]>,
+}
+
+impl Default for Filter {
+    fn default() -> Filter {
+        Filter {
+            entries: Entries::empty(GL_RGBA),
+            column: Vec::new(),
+        }
+    }
+}
+
+/// The pixel-mode state of the imaging subset (GL_PIXEL_MODE_BIT; the enables also
+/// GL_ENABLE_BIT): the enables, the color table scales and biases, the filters' border
+/// modes, colors, scales and biases.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ImagingModes {
+    /// GL_COLOR_TABLE, GL_POST_CONVOLUTION_COLOR_TABLE, GL_POST_COLOR_MATRIX_COLOR_TABLE.
+    pub tables_enabled: [bool; 3],
+    /// GL_CONVOLUTION_1D, GL_CONVOLUTION_2D, GL_SEPARABLE_2D.
+    pub convolutions_enabled: [bool; 3],
+    pub histogram_enabled: bool,
+    pub minmax_enabled: bool,
+    pub table_scale: [[f32; 4]; 3],
+    pub table_bias: [[f32; 4]; 3],
+    pub border_mode: [GLenum; 3],
+    pub border_color: [[f32; 4]; 3],
+    pub filter_scale: [[f32; 4]; 3],
+    pub filter_bias: [[f32; 4]; 3],
+}
+
+impl Default for ImagingModes {
+    fn default() -> ImagingModes {
+        ImagingModes {
+            tables_enabled: [false; 3],
+            convolutions_enabled: [false; 3],
+            histogram_enabled: false,
+            minmax_enabled: false,
+            table_scale: [[1.0; 4]; 3],
+            table_bias: [[0.0; 4]; 3],
+            border_mode: [GL_REDUCE; 3],
+            border_color: [[0.0; 4]; 3],
+            filter_scale: [[1.0; 4]; 3],
+            filter_bias: [[0.0; 4]; 3],
+        }
+    }
+}
+
+/// The histogram (§3.6.5): its format, width, sink flag and counts.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Histogram {
+    pub entries: Entries,
+    pub sink: bool,
+}
+
+impl Default for Histogram {
+    fn default() -> Histogram {
+        Histogram {
+            entries: Entries::empty(GL_RGBA),
+            sink: false,
+        }
+    }
+}
+
+/// Minmax (§3.6.5): its format, sink flag and the minimum and maximum.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Minmax {
+    pub internal_format: GLenum,
+    pub base: Base,
+    pub sink: bool,
+    pub min: [f32; 4],
+    pub max: [f32; 4],
+}
+
+impl Default for Minmax {
+    fn default() -> Minmax {
+        Minmax {
+            internal_format: GL_RGBA,
+            base: Base::Rgba,
+            sink: false,
+            min: [f32::MAX; 4],
+            max: [f32::MIN; 4],
+        }
+    }
+}
+
+/// The imaging subset's images and results (in no attribute group).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Imaging {
+    pub tables: [ColorTable; 3],
+    pub proxy_tables: [ColorTable; 3],
+    pub filters: [Filter; 3],
+    pub histogram: Histogram,
+    pub proxy_histogram: Histogram,
+    pub minmax: Minmax,
+}
+
+/// The color table a target names: (index, proxy), or GL_INVALID_ENUM.
+pub fn color_table_target(target: GLenum) -> GlResult<(usize, bool)> {
+    match target {
+        GL_COLOR_TABLE..=GL_POST_COLOR_MATRIX_COLOR_TABLE => {
+            Ok(((target - GL_COLOR_TABLE) as usize, false))
+        }
+        GL_PROXY_COLOR_TABLE..=GL_PROXY_POST_COLOR_MATRIX_COLOR_TABLE => {
+            Ok(((target - GL_PROXY_COLOR_TABLE) as usize, true))
+        }
+        _ => Err(GlError::InvalidEnum),
+    }
+}
+
+/// The convolution filter a target names, or GL_INVALID_ENUM.
+pub fn convolution_target(target: GLenum) -> GlResult<usize> {
+    CONVOLUTIONS
+        .iter()
+        .position(|&t| t == target)
+        .ok_or(GlError::InvalidEnum)
+}
+
+/// A table or histogram width: GL_INVALID_VALUE unless 0 or a power of two; whether it fits.
+pub fn table_width(width: i32) -> GlResult<bool> {
+    let width = usize::try_from(width).map_err(|_| GlError::InvalidValue)?;
+    if width != 0 && !width.is_power_of_two() {
+        return Err(GlError::InvalidValue);
+    }
+    Ok(width <= MAX_COLOR_TABLE_WIDTH)
+}
