@@ -3,12 +3,12 @@
 
 CARGO ?= cargo
 CC ?= cc
-PACKAGES := libosmesa6-dev libglu1-mesa-dev pkg-config gcc make python3
+PACKAGES := libosmesa6-dev libglu1-mesa-dev pkg-config gcc g++ cmake binutils make python3
 CFLAGS_STRICT := -std=c99 -Wall -Wextra -Werror -pedantic
 LIB := target/debug/libfflight.a
 DEMO_DIR := target/demo
 
-.PHONY: all deps build header test lint demo bench clean
+.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize
 
 all: build
 
@@ -34,6 +34,7 @@ lint:
 test: build
 	$(CARGO) test
 	$(MAKE) lint
+	$(MAKE) --no-print-directory test-install
 
 demo: build
 	@mkdir -p $(DEMO_DIR)
@@ -65,3 +66,79 @@ bench:
 
 clean:
 	$(CARGO) clean
+
+# ---- installation: make install PREFIX=/usr/local DESTDIR= (PROFILE=release) ----
+# The shared library as libfflight.so.VERSION with the SONAME libfflight.so.MAJOR (set by
+# build.rs) and its two links, the static library, the header, a pkg-config file and a CMake
+# package (fflight::fflight). `make uninstall` removes exactly these files.
+PREFIX ?= /usr/local
+DESTDIR ?=
+PROFILE ?= release
+VERSION := $(shell sed -n 's/^version = "\(.*\)"/\1/p' Cargo.toml | head -1)
+MAJOR := $(firstword $(subst ., ,$(VERSION)))
+INSTALL_ROOT = $(DESTDIR)$(PREFIX)
+INSTALLED = lib/libfflight.so.$(VERSION) lib/libfflight.so.$(MAJOR) lib/libfflight.so \
+	lib/libfflight.a include/fflight.h lib/pkgconfig/fflight.pc \
+	lib/cmake/fflight/fflightConfig.cmake lib/cmake/fflight/fflightConfigVersion.cmake
+SUBSTITUTE = sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@MAJOR@|$(MAJOR)|g'
+
+install:
+	$(CARGO) build $(if $(filter release,$(PROFILE)),--release,)
+	install -d $(INSTALL_ROOT)/lib/pkgconfig $(INSTALL_ROOT)/lib/cmake/fflight $(INSTALL_ROOT)/include
+	install -m 755 target/$(PROFILE)/libfflight.so $(INSTALL_ROOT)/lib/libfflight.so.$(VERSION)
+	ln -sf libfflight.so.$(VERSION) $(INSTALL_ROOT)/lib/libfflight.so.$(MAJOR)
+	ln -sf libfflight.so.$(MAJOR) $(INSTALL_ROOT)/lib/libfflight.so
+	install -m 644 target/$(PROFILE)/libfflight.a $(INSTALL_ROOT)/lib/libfflight.a
+	install -m 644 include/fflight.h $(INSTALL_ROOT)/include/fflight.h
+	$(SUBSTITUTE) build/install/fflight.pc.in > $(INSTALL_ROOT)/lib/pkgconfig/fflight.pc
+	$(SUBSTITUTE) build/install/fflightConfig.cmake.in > $(INSTALL_ROOT)/lib/cmake/fflight/fflightConfig.cmake
+	$(SUBSTITUTE) build/install/fflightConfigVersion.cmake.in > $(INSTALL_ROOT)/lib/cmake/fflight/fflightConfigVersion.cmake
+
+uninstall:
+	rm -f $(addprefix $(INSTALL_ROOT)/,$(INSTALLED))
+	-rmdir $(INSTALL_ROOT)/lib/cmake/fflight 2>/dev/null
+
+# Installs the debug build into a temporary prefix, builds a C program with pkg-config
+# (shared and static) and a C++ program with CMake against it, runs them, checks the SONAME,
+# uninstalls and checks that nothing of fflight is left.
+INSTALL_TEST := $(CURDIR)/target/install-test
+test-install:
+	rm -rf $(INSTALL_TEST)
+	$(MAKE) --no-print-directory install PROFILE=debug PREFIX=$(INSTALL_TEST)/prefix
+	readelf -d $(INSTALL_TEST)/prefix/lib/libfflight.so | grep -q 'SONAME.*libfflight.so.$(MAJOR)'
+	mkdir -p $(INSTALL_TEST)/build
+	PKG_CONFIG_PATH=$(INSTALL_TEST)/prefix/lib/pkgconfig; export PKG_CONFIG_PATH; \
+	$(CC) -std=c99 -Wall -Werror tests/install/hello.c $$(pkg-config --cflags --libs fflight) -lm \
+		-o $(INSTALL_TEST)/build/hello_shared && \
+	$(CC) -std=c99 -Wall -Werror tests/install/hello.c $$(pkg-config --cflags fflight) \
+		$(INSTALL_TEST)/prefix/lib/libfflight.a $$(pkg-config --libs-only-other --static fflight) -lm -lpthread -ldl \
+		-o $(INSTALL_TEST)/build/hello_static
+	LD_LIBRARY_PATH=$(INSTALL_TEST)/prefix/lib $(INSTALL_TEST)/build/hello_shared
+	$(INSTALL_TEST)/build/hello_static
+	cmake -S tests/install -B $(INSTALL_TEST)/cmake -DCMAKE_PREFIX_PATH=$(INSTALL_TEST)/prefix > /dev/null
+	cmake --build $(INSTALL_TEST)/cmake > /dev/null
+	$(INSTALL_TEST)/cmake/hello_cmake
+	$(MAKE) --no-print-directory uninstall PREFIX=$(INSTALL_TEST)/prefix
+	test -z "$$(find $(INSTALL_TEST)/prefix -type f -o -type l)"
+
+# ---- the C test programs under AddressSanitizer and UndefinedBehaviorSanitizer ----
+# Each c_tests program, built against libfflight.a with the sanitizers on the C side (the
+# Rust library itself is not instrumented: its sanitizers need a nightly compiler) and run:
+# any sanitizer report fails. Their outputs are checked by `cargo test` (tests/c_programs.rs).
+SANITIZE_DIR := target/sanitize
+SANITIZE_FLAGS := -std=c99 -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+test-sanitize: build
+	@mkdir -p $(SANITIZE_DIR)
+	@failed=0; count=0; for src in c_tests/*.c; do \
+		name=$$(basename $$src .c); \
+		libs=$$(sed -n 's/.*ffl-libs:\(.*\)/\1/p' $$src | head -1); \
+		if [ -n "$$libs" ]; then libs="$$libs -rdynamic"; fi; \
+		$(CC) $(SANITIZE_FLAGS) -Iinclude -Ic_tests $$src $$libs $(LIB) -lm -lpthread -ldl \
+			-o $(SANITIZE_DIR)/$$name || { failed=1; continue; }; \
+		count=$$((count + 1)); \
+		ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 \
+			$(SANITIZE_DIR)/$$name > $(SANITIZE_DIR)/$$name.txt 2> $(SANITIZE_DIR)/$$name.err; \
+		if grep -q 'ERROR: AddressSanitizer\|ERROR: LeakSanitizer\|runtime error' $(SANITIZE_DIR)/$$name.err; then \
+			echo "sanitizer report: $$name"; cat $(SANITIZE_DIR)/$$name.err; failed=1; \
+		fi; \
+	done; echo "test-sanitize: $$count programs under ASan and UBSan"; exit $$failed

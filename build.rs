@@ -20,6 +20,11 @@ fn main() {
 
     let bless = env::var_os("FFLIGHT_BLESS").is_some_and(|v| v == "1");
 
+    // The shared library's SONAME: its major version (docs/abi.md), so that programs linked
+    // against libfflight.so.0 load any 0.x release.
+    let major = env::var("CARGO_PKG_VERSION_MAJOR").expect("set by cargo");
+    println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libfflight.so.{major}");
+
     // First the entry points, so that a blessed run's header declares the new ones.
     let table = fs::read_to_string(crate_dir.join("src/capi/entry_points.txt"))
         .expect("src/capi/entry_points.txt exists");
