@@ -10,7 +10,7 @@
 
 int main(void)
 {
-    GLubyte pixels[4 * 4 * 4], back[2 * 2 * 4], stipple[4 * 32], stipple_back[128];
+    GLubyte pixels[4 * 4 * 4], back[2 * 2 * 4], stipple[4 * 32 + 8], stipple_back[128];
     GLuint list, texture;
     int k;
 
@@ -22,8 +22,8 @@ int main(void)
     glGenTextures(1, &texture);
     glBindTexture(GL_TEXTURE_2D, texture);
 
-    /* Rows of 4 pixels, the first row and pixel skipped; stipple rows of 4 bytes, the LSB
-     * first. */
+    /* Rows of 4 pixels, the first row and pixel skipped; stipple rows of 4 bytes (row
+     * length 4 bits, aligned to 4), the LSB first: the stipple then reads 133 bytes. */
     glPixelStorei(GL_UNPACK_ROW_LENGTH, 4);
     glPixelStorei(GL_UNPACK_SKIP_ROWS, 1);
     glPixelStorei(GL_UNPACK_SKIP_PIXELS, 1);
