@@ -6,7 +6,8 @@
  * color tables (entries scaled, biased and clamped, sub-tables, copies of the empty
  * framebuffer, proxies, parameters, widths that are not powers of two, GL_TABLE_TOO_LARGE),
  * convolution filters (1D, 2D, separable, parameters, the maximum size), histogram and
- * minmax (formats, sinks, resets; nothing is drawn, so the counts stay 0) and their enables.
+ * minmax (formats, sinks, resets; nothing is drawn, so the counts stay 0) and their enables,
+ * the color matrix stack and the post-convolution and post-color-matrix transfer modes.
  */
 #include "ffl_test.h"
 #include <float.h>
@@ -200,11 +201,49 @@ static void histogram_minmax(void)
     error("histogram minmax", GL_NO_ERROR);
 }
 
+/* The color matrix stack and the post-convolution and post-color-matrix transfer modes. */
+static void color_matrix(void)
+{
+    GLfloat m[16];
+    GLint v[2], expected[2];
+    glMatrixMode(GL_COLOR);
+    error("color matrix mode", GL_NO_ERROR);
+    glPushMatrix();
+    glScalef(0.5f, 2.0f, 1.0f);
+    glGetFloatv(GL_COLOR_MATRIX, m);
+    floats4("color matrix diagonal", (GLfloat[4]){ m[0], m[5], m[10], m[15] }, 0.5, 2, 1, 1);
+    glGetIntegerv(GL_COLOR_MATRIX_STACK_DEPTH, v);
+    glGetIntegerv(GL_MATRIX_MODE, v + 1);
+    expected[0] = 2;
+    expected[1] = GL_COLOR;
+    ints("color stack depth, mode", v, expected, 2);
+    glPopMatrix();
+    glPopMatrix();
+    error("color stack underflow", GL_STACK_UNDERFLOW);
+    glGetIntegerv(GL_MAX_COLOR_MATRIX_STACK_DEPTH, v);
+    printf("max color stack depth at least 2 b %d ref b 1\n", v[0] >= 2);
+    glMatrixMode(GL_MODELVIEW);
+    glPixelTransferf(GL_POST_COLOR_MATRIX_GREEN_SCALE, 0.75f);
+    glPixelTransferf(GL_POST_CONVOLUTION_ALPHA_BIAS, -0.5f);
+    glGetFloatv(GL_POST_COLOR_MATRIX_GREEN_SCALE, m);
+    glGetFloatv(GL_POST_CONVOLUTION_ALPHA_BIAS, m + 1);
+    glGetFloatv(GL_POST_CONVOLUTION_RED_SCALE, m + 2);
+    glGetFloatv(GL_POST_COLOR_MATRIX_BLUE_BIAS, m + 3);
+    floats4("post transfer", m, 0.75, -0.5, 1, 0);
+    glPushAttrib(GL_PIXEL_MODE_BIT);
+    glPixelTransferf(GL_POST_COLOR_MATRIX_GREEN_SCALE, 3.0f);
+    glPopAttrib();
+    glGetFloatv(GL_POST_COLOR_MATRIX_GREEN_SCALE, m);
+    printf("post transfer restored v %g ref v 0.75\n", (double)m[0]);
+    error("color matrix", GL_NO_ERROR);
+}
+
 int main(void)
 {
     ffl_test_init();
     color_tables();
     convolution();
     histogram_minmax();
+    color_matrix();
     return 0;
 }

@@ -449,7 +449,11 @@ const TEX_GEN_MODES: [GLenum; 2] = [GL_OBJECT_LINEAR, GL_EYE_LINEAR];
 const VALID_CAPS: usize = 76;
 /// The glGet pnames of vertex processing, the older rasterization state and the buffer
 /// bindings; `get_pnames` adds those of tests/common/state_lists.rs.
-const GET_PNAMES: [GLenum; 106] = [
+const GET_PNAMES: [GLenum; 110] = [
+    GL_TRANSPOSE_COLOR_MATRIX,
+    GL_COLOR_MATRIX,
+    GL_COLOR_MATRIX_STACK_DEPTH,
+    GL_MAX_COLOR_MATRIX_STACK_DEPTH,
     GL_MAX_EVAL_ORDER,
     GL_MAP1_GRID_DOMAIN,
     GL_MAP1_GRID_SEGMENTS,
@@ -600,7 +604,7 @@ fn get_pnames() -> Vec<GLenum> {
         .chain(state_pnames())
         .collect()
 }
-const MATRIX_MODES: [GLenum; 3] = [GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE];
+const MATRIX_MODES: [GLenum; 4] = [GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE, GL_COLOR];
 const COMPARISON_FUNCS: [GLenum; 8] = [
     GL_NEVER,
     GL_LESS,

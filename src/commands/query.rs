@@ -125,14 +125,19 @@ impl Context {
             GL_COLOR_MATERIAL_FACE => enumeration(self.color_material.face),
             GL_COLOR_MATERIAL_PARAMETER => enumeration(self.color_material.mode),
             GL_MATRIX_MODE => enumeration(m.mode),
-            GL_MODELVIEW_MATRIX | GL_PROJECTION_MATRIX | GL_TEXTURE_MATRIX => floats(
-                &m.stack(matrix_of(pname), self.textures.active_unit)
-                    .top()
-                    .to_cols_array(),
-            ),
+            GL_COLOR_MATRIX_STACK_DEPTH => int(m.color.depth() as i32),
+            GL_MAX_COLOR_MATRIX_STACK_DEPTH => int(m.color.max_depth() as i32),
+            GL_MODELVIEW_MATRIX | GL_PROJECTION_MATRIX | GL_TEXTURE_MATRIX | GL_COLOR_MATRIX => {
+                floats(
+                    &m.stack(matrix_of(pname), self.textures.active_unit)
+                        .top()
+                        .to_cols_array(),
+                )
+            }
             GL_TRANSPOSE_MODELVIEW_MATRIX
             | GL_TRANSPOSE_PROJECTION_MATRIX
-            | GL_TRANSPOSE_TEXTURE_MATRIX => floats(
+            | GL_TRANSPOSE_TEXTURE_MATRIX
+            | GL_TRANSPOSE_COLOR_MATRIX => floats(
                 &m.stack(matrix_of(pname), self.textures.active_unit)
                     .top()
                     .transpose()
@@ -255,6 +260,7 @@ fn matrix_of(pname: GLenum) -> GLenum {
     match pname {
         GL_PROJECTION_MATRIX | GL_TRANSPOSE_PROJECTION_MATRIX => GL_PROJECTION,
         GL_TEXTURE_MATRIX | GL_TRANSPOSE_TEXTURE_MATRIX => GL_TEXTURE,
+        GL_COLOR_MATRIX | GL_TRANSPOSE_COLOR_MATRIX => GL_COLOR,
         _ => GL_MODELVIEW,
     }
 }

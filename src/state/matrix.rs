@@ -9,6 +9,8 @@ use crate::state::texture::MAX_TEXTURE_UNITS;
 pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
 pub const MAX_PROJECTION_STACK_DEPTH: usize = 32;
 pub const MAX_TEXTURE_STACK_DEPTH: usize = 10;
+/// GL_MAX_COLOR_MATRIX_STACK_DEPTH (Mesa's).
+pub const MAX_COLOR_MATRIX_STACK_DEPTH: usize = 4;
 
 /// One stack: the top is the current matrix.
 #[derive(Clone, Debug, PartialEq)]
@@ -66,6 +68,8 @@ pub struct Matrices {
     pub modelview: MatrixStack,
     pub projection: MatrixStack,
     pub texture: [MatrixStack; MAX_TEXTURE_UNITS],
+    /// The imaging subset's color matrix (§3.6.3): kept and queried.
+    pub color: MatrixStack,
 }
 
 impl Default for Matrices {
@@ -75,6 +79,7 @@ impl Default for Matrices {
             modelview: MatrixStack::new(MAX_MODELVIEW_STACK_DEPTH),
             projection: MatrixStack::new(MAX_PROJECTION_STACK_DEPTH),
             texture: std::array::from_fn(|_| MatrixStack::new(MAX_TEXTURE_STACK_DEPTH)),
+            color: MatrixStack::new(MAX_COLOR_MATRIX_STACK_DEPTH),
         }
     }
 }
@@ -85,6 +90,7 @@ impl Matrices {
         match mode {
             GL_PROJECTION => &self.projection,
             GL_TEXTURE => &self.texture[unit],
+            GL_COLOR => &self.color,
             _ => &self.modelview,
         }
     }
@@ -94,12 +100,13 @@ impl Matrices {
         match self.mode {
             GL_PROJECTION => &mut self.projection,
             GL_TEXTURE => &mut self.texture[unit],
+            GL_COLOR => &mut self.color,
             _ => &mut self.modelview,
         }
     }
 
     pub fn set_mode(&mut self, mode: GLenum) -> GlResult {
-        if !matches!(mode, GL_MODELVIEW | GL_PROJECTION | GL_TEXTURE) {
+        if !matches!(mode, GL_MODELVIEW | GL_PROJECTION | GL_TEXTURE | GL_COLOR) {
             return Err(GlError::InvalidEnum);
         }
         self.mode = mode;

@@ -252,6 +252,10 @@ pub struct PixelModeAttribs {
     /// x, y.
     pub zoom: [f32; 2],
     pub read_buffer: GLenum,
+    /// The imaging subset's post-convolution and post-color-matrix scales (red to alpha)
+    /// then biases: kept and queried (no pixel rectangle goes through them).
+    pub post_convolution: [f32; 8],
+    pub post_color_matrix: [f32; 8],
 }
 
 impl Default for PixelModeAttribs {
@@ -266,6 +270,8 @@ impl Default for PixelModeAttribs {
             zoom: [1.0, 1.0],
             // Single-buffered, as the draw buffer.
             read_buffer: GL_FRONT,
+            post_convolution: [1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0],
+            post_color_matrix: [1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0],
         }
     }
 }
@@ -288,10 +294,26 @@ fn scale_or_bias(pname: GLenum) -> Option<(usize, bool)> {
 }
 
 impl PixelModeAttribs {
+    /// The imaging subset's post-convolution or post-color-matrix scale or bias `pname`.
+    fn post_transfer_mut(&mut self, pname: GLenum) -> Option<&mut f32> {
+        match pname {
+            GL_POST_CONVOLUTION_RED_SCALE..=GL_POST_CONVOLUTION_ALPHA_BIAS => {
+                Some(&mut self.post_convolution[(pname - GL_POST_CONVOLUTION_RED_SCALE) as usize])
+            }
+            GL_POST_COLOR_MATRIX_RED_SCALE..=GL_POST_COLOR_MATRIX_ALPHA_BIAS => {
+                Some(&mut self.post_color_matrix[(pname - GL_POST_COLOR_MATRIX_RED_SCALE) as usize])
+            }
+            _ => None,
+        }
+    }
+
     /// glPixelTransfer (§3.6.3), with the parameter as a float (glPixelTransferi's converts
-    /// exactly enough); integer modes are rounded. The imaging subset's pnames are not
-    /// supported (GL_INVALID_ENUM).
+    /// exactly enough); integer modes are rounded.
     pub fn set_transfer(&mut self, pname: GLenum, param: f32) -> GlResult {
+        if let Some(value) = self.post_transfer_mut(pname) {
+            *value = param;
+            return Ok(());
+        }
         match pname {
             GL_MAP_COLOR => self.map_color = param != 0.0,
             GL_MAP_STENCIL => self.map_stencil = param != 0.0,
@@ -311,6 +333,9 @@ impl PixelModeAttribs {
 
     /// A transfer mode's value (a float, or an integer with whether it is a boolean), or None.
     pub fn transfer(&self, pname: GLenum) -> Option<TransferValue> {
+        if let Some(value) = self.clone().post_transfer_mut(pname) {
+            return Some(TransferValue::Float(*value));
+        }
         Some(match pname {
             GL_MAP_COLOR => TransferValue::Bool(self.map_color),
             GL_MAP_STENCIL => TransferValue::Bool(self.map_stencil),
