@@ -961,6 +961,7 @@ c_programs!(
     dlist_nesting,
     dlist_images,
     legacy_redbook_scene,
+    legacy_bezier_patches,
     dlist_call_lists,
     dlist_arrays,
     dlist_errors,
