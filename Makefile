@@ -3,12 +3,12 @@
 
 CARGO ?= cargo
 CC ?= cc
-PACKAGES := libosmesa6-dev libglu1-mesa-dev pkg-config gcc g++ cmake binutils make python3
+PACKAGES := libosmesa6-dev libglu1-mesa-dev pkg-config gcc g++ cmake binutils valgrind make python3
 CFLAGS_STRICT := -std=c99 -Wall -Wextra -Werror -pedantic
 LIB := target/debug/libfflight.a
 DEMO_DIR := target/demo
 
-.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize
+.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind
 
 all: build
 
@@ -36,6 +36,7 @@ test: build
 	$(MAKE) lint
 	$(MAKE) --no-print-directory test-install
 	$(MAKE) --no-print-directory test-sanitize
+	$(MAKE) --no-print-directory test-valgrind
 
 demo: build
 	@mkdir -p $(DEMO_DIR)
@@ -143,3 +144,15 @@ $(SANITIZE_DIR)/%.ok: c_tests/%.c c_tests/ffl_test.h $(LIB)
 	@if grep -q 'ERROR: AddressSanitizer\|ERROR: LeakSanitizer\|runtime error' $(@:.ok=.err); then \
 		echo "sanitizer report: $*"; cat $(@:.ok=.err); exit 1; fi
 	@touch $@
+
+# ---- valgrind memcheck over the C test programs ----
+# Every fflight build of c_tests (made by `cargo test`: run that first) under memcheck, two at
+# a time: any memory error or definite leak (threads that exit without destroying their
+# default context included: thread_exit_context.c) fails. Exit statuses of the programs
+# themselves are checked by `cargo test`.
+test-valgrind:
+	@ls target/c_tests/*.fflight > /dev/null
+	@ls target/c_tests/*.fflight | xargs -P2 -I{} sh -c \
+		'valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite {} \
+		> /dev/null 2> {}.valgrind; if [ $$? = 99 ]; then echo "valgrind: {}"; cat {}.valgrind; exit 255; fi'
+	@echo "test-valgrind: $$(ls target/c_tests/*.fflight | wc -l) programs under memcheck, no error, no definite leak"

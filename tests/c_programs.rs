@@ -962,6 +962,7 @@ c_programs!(
     dlist_images,
     legacy_redbook_scene,
     legacy_bezier_patches,
+    thread_exit_context,
     dlist_call_lists,
     dlist_arrays,
     dlist_errors,
