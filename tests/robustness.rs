@@ -35,6 +35,7 @@ use std::ptr::{null, null_mut};
 
 use common::*;
 use fflight::commands::arrays::{ArraySources, ElementIndices};
+use fflight::commands::attrib_stack::ENABLE_BIT_CAPABILITIES;
 use fflight::commands::query::StateValue;
 use fflight::current::with_current;
 use fflight::lighting::{FaceColors, LitVertex};
@@ -314,90 +315,29 @@ const CLIENT_ARRAYS: [GLenum; 8] = [
     GL_SECONDARY_COLOR_ARRAY,
     GL_FOG_COORD_ARRAY,
 ];
-/// Every capability glEnable accepts: lighting, clip planes, culling, the rasterization
-/// capabilities fflight stores (values of <GL/gl.h>), and the client arrays.
-const CAPS: [GLenum; 79] = [
-    GL_MAP1_COLOR_4,
-    GL_MAP1_INDEX,
-    GL_MAP1_NORMAL,
-    GL_MAP1_TEXTURE_COORD_1,
-    GL_MAP1_TEXTURE_COORD_2,
-    GL_MAP1_TEXTURE_COORD_3,
-    GL_MAP1_TEXTURE_COORD_4,
-    GL_MAP1_VERTEX_3,
-    GL_MAP1_VERTEX_4,
-    GL_MAP2_COLOR_4,
-    GL_MAP2_INDEX,
-    GL_MAP2_NORMAL,
-    GL_MAP2_TEXTURE_COORD_1,
-    GL_MAP2_TEXTURE_COORD_2,
-    GL_MAP2_TEXTURE_COORD_3,
-    GL_MAP2_TEXTURE_COORD_4,
-    GL_MAP2_VERTEX_3,
-    GL_MAP2_VERTEX_4,
-    GL_LIGHTING,
-    GL_LIGHT0,
-    GL_LIGHT1,
-    GL_LIGHT2,
-    GL_LIGHT3,
-    GL_LIGHT4,
-    GL_LIGHT5,
-    GL_LIGHT6,
-    GL_LIGHT7,
-    GL_NORMALIZE,
-    GL_RESCALE_NORMAL,
-    GL_COLOR_MATERIAL,
-    GL_CULL_FACE,
-    GL_CLIP_PLANE0,
-    GL_CLIP_PLANE1,
-    GL_CLIP_PLANE2,
-    GL_CLIP_PLANE3,
-    GL_CLIP_PLANE4,
-    GL_CLIP_PLANE5,
-    GL_ALPHA_TEST,
-    GL_AUTO_NORMAL,
-    GL_BLEND,
-    GL_COLOR_LOGIC_OP,
-    GL_COLOR_SUM,
-    GL_DEPTH_TEST,
-    GL_DITHER,
-    GL_FOG,
-    GL_INDEX_LOGIC_OP,
-    GL_LINE_SMOOTH,
-    GL_LINE_STIPPLE,
-    GL_MULTISAMPLE,
-    GL_POINT_SMOOTH,
-    GL_POLYGON_OFFSET_FILL,
-    GL_POLYGON_OFFSET_LINE,
-    GL_POLYGON_OFFSET_POINT,
-    GL_POLYGON_SMOOTH,
-    GL_POLYGON_STIPPLE,
-    GL_SCISSOR_TEST,
-    GL_STENCIL_TEST,
-    GL_TEXTURE_1D,
-    GL_TEXTURE_2D,
-    GL_TEXTURE_3D,
-    GL_TEXTURE_CUBE_MAP,
-    GL_TEXTURE_GEN_S,
-    GL_TEXTURE_GEN_T,
-    GL_TEXTURE_GEN_R,
-    GL_TEXTURE_GEN_Q,
-    GL_SAMPLE_ALPHA_TO_COVERAGE,
-    GL_SAMPLE_ALPHA_TO_ONE,
-    GL_SAMPLE_COVERAGE,
-    GL_VERTEX_ARRAY,
-    GL_NORMAL_ARRAY,
-    GL_COLOR_ARRAY,
-    GL_INDEX_ARRAY,
-    GL_TEXTURE_COORD_ARRAY,
-    GL_EDGE_FLAG_ARRAY,
-    GL_SECONDARY_COLOR_ARRAY,
-    GL_FOG_COORD_ARRAY,
-    // Not capabilities: glEnable must reject these neighbors of real ones.
+/// Not capabilities: glEnable must reject these neighbors of real ones.
+const NOT_CAPS: [GLenum; 3] = [
     GL_COLOR_MATERIAL_FACE,
     GL_LIGHT_MODEL_AMBIENT,
     GL_MAX_LIGHTS,
 ];
+
+/// Every capability glEnable accepts (the attribute stack's list of them, and the client
+/// arrays, which fflight accepts there as Mesa does), then `NOT_CAPS`.
+fn caps() -> Vec<GLenum> {
+    ENABLE_BIT_CAPABILITIES
+        .iter()
+        .chain(&CLIENT_ARRAYS)
+        .chain(&NOT_CAPS)
+        .copied()
+        .collect()
+}
+
+/// The capabilities of `caps()`.
+fn valid_caps() -> Vec<GLenum> {
+    let caps = caps();
+    caps[..caps.len() - NOT_CAPS.len()].to_vec()
+}
 const TEXTURE_UNITS: [GLenum; 8] = [
     GL_TEXTURE0,
     GL_TEXTURE1,
@@ -445,8 +385,6 @@ fn map1_values_per_point(target: GLenum) -> usize {
 const TEX_GEN_PNAMES: [GLenum; 3] = [GL_TEXTURE_GEN_MODE, GL_OBJECT_PLANE, GL_EYE_PLANE];
 /// The modes every coordinate takes (sphere, normal and reflection maps are not q's).
 const TEX_GEN_MODES: [GLenum; 2] = [GL_OBJECT_LINEAR, GL_EYE_LINEAR];
-/// How many of `CAPS` are capabilities.
-const VALID_CAPS: usize = 76;
 /// The glGet pnames of vertex processing, the older rasterization state and the buffer
 /// bindings; `get_pnames` adds those of tests/common/state_lists.rs.
 const GET_PNAMES: [GLenum; 110] = [
@@ -1310,7 +1248,7 @@ impl Op {
             Op::ColorMaterial { face, mode } => {
                 !valid(face, &FACES) || !valid(mode, &COLOR_MATERIAL_MODES)
             }
-            Op::Capability { cap, .. } | Op::IsEnabled(cap) => !valid(cap, &CAPS[..VALID_CAPS]),
+            Op::Capability { cap, .. } | Op::IsEnabled(cap) => !valid(cap, &valid_caps()),
             Op::MatrixMode(mode) => !valid(mode, &MATRIX_MODES),
             Op::Map1 {
                 target,
@@ -1456,7 +1394,7 @@ impl Op {
                     || colors.as_ref().is_some_and(|v| v.len() < n)
                     || out < n
             }
-            Op::Get(pname) => !valid(pname, &get_pnames()) && !valid(pname, &CAPS[..VALID_CAPS]),
+            Op::Get(pname) => !valid(pname, &get_pnames()) && !valid(pname, &valid_caps()),
             Op::GetLight { light, pname, .. } => {
                 !valid(light, &LIGHTS) || !valid(pname, &LIGHT_PNAMES)
             }
@@ -1651,7 +1589,7 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
             mode: rng.enumeration(&COLOR_MATERIAL_MODES),
         },
         13..=15 => Op::Capability {
-            cap: rng.enumeration(&CAPS),
+            cap: rng.enumeration(&caps()),
             enabled: !rng.one_in(3),
         },
         16 => Op::Color(rng.vec4(f)),
@@ -1843,7 +1781,7 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
         71 => Op::CaptureEnd,
         72 => {
             let get_pnames = get_pnames();
-            let pnames: &[GLenum] = if rng.coin() { &get_pnames } else { &CAPS };
+            let pnames: &[GLenum] = if rng.coin() { &get_pnames } else { &caps() };
             Op::Get(rng.enumeration(pnames))
         }
         73 => Op::GetLight {
@@ -1858,7 +1796,7 @@ fn any_op(rng: &mut Rng, finite: bool) -> Op {
         },
         75 => match rng.below(4) {
             0 => Op::GetClipPlane(rng.enumeration(&CLIP_PLANES)),
-            1 => Op::IsEnabled(rng.enumeration(&CAPS)),
+            1 => Op::IsEnabled(rng.enumeration(&caps())),
             2 => Op::GetString(rng.enumeration(&STRING_NAMES)),
             _ => Op::GetPointer(rng.enumeration(&POINTER_PNAMES)),
         },
@@ -2630,7 +2568,7 @@ impl Snapshot {
         if c.inside_begin_end() {
             c.end().expect("glEnd ends the primitive in progress");
         }
-        for &pname in CAPS[..VALID_CAPS].iter().chain(&get_pnames()) {
+        for &pname in valid_caps().iter().chain(&get_pnames()) {
             let values = s.start(Key::Get(pname));
             match c.get(pname) {
                 Ok(StateValue::Bools(v)) => values.extend(v.iter().map(|&b| 0x100 | b as u64)),
@@ -3347,11 +3285,11 @@ unsafe fn bad_call(rng: &mut Rng) -> String {
             ),
             // Wrong enums.
             38 => match rng.coin() {
-                true => glEnable(rng.invalid_enum(&CAPS[..VALID_CAPS])),
-                false => glDisable(rng.invalid_enum(&CAPS[..VALID_CAPS])),
+                true => glEnable(rng.invalid_enum(&valid_caps())),
+                false => glDisable(rng.invalid_enum(&valid_caps())),
             },
             39 => {
-                glIsEnabled(rng.invalid_enum(&CAPS[..VALID_CAPS]));
+                glIsEnabled(rng.invalid_enum(&valid_caps()));
             }
             40 => match rng.coin() {
                 true => glLightf(rng.invalid_enum(&LIGHTS), light_pname, 1.0),
