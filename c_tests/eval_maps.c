@@ -204,6 +204,33 @@ static void rational_patch(void)
     glDeleteLists(list, 1);
 }
 
+/* A curve of the largest order GL_MAX_EVAL_ORDER allows here (30, as Mesa's). */
+static void highest_order(void)
+{
+    static GLfloat points[30][3];
+    ffl_rng rng;
+    GLint max_order = 0;
+    int k;
+    glGetIntegerv(GL_MAX_EVAL_ORDER, &max_order);
+    if (max_order > 30)
+        max_order = 30;
+    ffl_rng_seed(&rng, 30);
+    for (k = 0; k < max_order; k++) {
+        points[k][0] = -4.0f + 8.0f * (float)k / (float)(max_order - 1);
+        points[k][1] = ffl_rng_float(&rng, -3.0, 3.0);
+        points[k][2] = ffl_rng_float(&rng, -1.0, 1.0);
+    }
+    glDisable(GL_LIGHTING);
+    glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, max_order, &points[0][0]);
+    glEnable(GL_MAP1_VERTEX_3);
+    glMapGrid1f(10, 0.0f, 1.0f);
+    start(GL_3D);
+    glEvalMesh1(GL_POINT, 0, 10);
+    finish("order_30", GL_3D);
+    glDisable(GL_MAP1_VERTEX_3);
+    glEnable(GL_LIGHTING);
+}
+
 static void errors(void)
 {
     GLfloat values[4];
@@ -275,6 +302,7 @@ int main(void)
     curves();
     lit_patch();
     rational_patch();
+    highest_order();
     errors();
     return 0;
 }
