@@ -1,0 +1,243 @@
+//! The legacy routine: a lit scene written as OpenGL 1.x programs draw one, with lights,
+//! materials, color material, glBegin/glEnd, vertex arrays and a display list. It calls GL
+//! only through the [`Legacy`] table it is given and does not know whose GL that is: fflight
+//! (captured) or the system GL's fixed-function pipeline.
+//!
+//! Every object gets its own alpha (the diffuse alpha, or the color array's for the color
+//! material sphere), so the alpha channel of a rendering tells which object covers a pixel:
+//! `compare.rs` finds the silhouettes with it.
+
+use std::f32::consts::PI;
+use std::ffi::c_void;
+
+use crate::gl::*;
+
+/// Alpha of each object: the clear color's, the floor's, the vertex-array sphere's and the two
+/// display-list spheres'. Multiples of 1/255, so that both GLs store exactly k in RGBA8 (a
+/// value halfway between two steps could round either way).
+pub const OBJECT_ALPHAS: [f32; 5] = [0.0, 96.0 / 255.0, 160.0 / 255.0, 224.0 / 255.0, 1.0];
+
+/// A sphere of `stacks` x `slices` quads around the origin, radius 1: positions (which are also
+/// the normals), and a color per vertex.
+struct Sphere {
+    positions: Vec<[f32; 3]>,
+    colors: Vec<[f32; 4]>,
+    rows: usize,
+    columns: usize,
+}
+
+impl Sphere {
+    fn new(stacks: usize, slices: usize, alpha: f32) -> Sphere {
+        let mut positions = Vec::new();
+        let mut colors = Vec::new();
+        for i in 0..=stacks {
+            let theta = PI * i as f32 / stacks as f32;
+            for j in 0..=slices {
+                let phi = 2.0 * PI * j as f32 / slices as f32;
+                let p = [
+                    theta.sin() * phi.cos(),
+                    theta.cos(),
+                    theta.sin() * phi.sin(),
+                ];
+                positions.push(p);
+                colors.push([
+                    0.5 + 0.5 * p[0],
+                    0.5 + 0.5 * p[1],
+                    0.5 - 0.5 * p[2] * p[0],
+                    alpha,
+                ]);
+            }
+        }
+        Sphere {
+            positions,
+            colors,
+            rows: stacks,
+            columns: slices,
+        }
+    }
+
+    fn index(&self, i: usize, j: usize) -> usize {
+        i * (self.columns + 1) + j
+    }
+
+    /// Two counterclockwise (seen from outside) triangles per quad.
+    fn triangle_indices(&self) -> Vec<u16> {
+        let mut indices = Vec::new();
+        for i in 0..self.rows {
+            for j in 0..self.columns {
+                let (a, b) = (self.index(i, j), self.index(i, j + 1));
+                let (c, d) = (self.index(i + 1, j), self.index(i + 1, j + 1));
+                for k in [a, b, c, b, d, c] {
+                    indices.push(k as u16);
+                }
+            }
+        }
+        indices
+    }
+}
+
+/// Draws the scene into a `width` x `height` viewport through `gl`.
+///
+/// # Safety
+/// `gl` holds valid functions of a GL with a current context on this thread.
+pub unsafe fn draw(gl: &Legacy, width: i32, height: i32) {
+    unsafe {
+        (gl.glViewport)(0, 0, width, height);
+        (gl.glClearColor)(0.0, 0.0, 0.0, OBJECT_ALPHAS[0]);
+        (gl.glClear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        (gl.glEnable)(GL_DEPTH_TEST);
+        (gl.glDepthFunc)(GL_LESS);
+        (gl.glEnable)(GL_CULL_FACE);
+        (gl.glCullFace)(GL_BACK);
+        (gl.glFrontFace)(GL_CCW);
+        (gl.glShadeModel)(GL_SMOOTH);
+
+        let aspect = width as f64 / height as f64;
+        (gl.glMatrixMode)(GL_PROJECTION);
+        (gl.glLoadIdentity)();
+        (gl.glFrustum)(-0.42 * aspect, 0.42 * aspect, -0.42, 0.42, 1.0, 30.0);
+        (gl.glMatrixMode)(GL_MODELVIEW);
+        (gl.glLoadIdentity)();
+        (gl.glTranslatef)(0.0, -0.25, -5.2);
+        (gl.glRotatef)(24.0, 1.0, 0.0, 0.0);
+        (gl.glRotatef)(-12.0, 0.0, 1.0, 0.0);
+
+        // Lights, placed in the world (after the viewing transform).
+        let ambient = [0.16f32, 0.16, 0.2, 1.0];
+        (gl.glLightModelfv)(GL_LIGHT_MODEL_AMBIENT, ambient.as_ptr());
+        (gl.glLightModeli)(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
+        (gl.glLightModeli)(
+            GL_LIGHT_MODEL_COLOR_CONTROL,
+            GL_SEPARATE_SPECULAR_COLOR as i32,
+        );
+        (gl.glEnable)(GL_LIGHTING);
+        (gl.glEnable)(GL_NORMALIZE);
+
+        // A white directional key light.
+        (gl.glLightfv)(GL_LIGHT0, GL_POSITION, [-0.5f32, 0.9, 0.7, 0.0].as_ptr());
+        (gl.glLightfv)(GL_LIGHT0, GL_DIFFUSE, [0.65f32, 0.65, 0.6, 1.0].as_ptr());
+        (gl.glLightfv)(GL_LIGHT0, GL_SPECULAR, [0.8f32, 0.8, 0.8, 1.0].as_ptr());
+        (gl.glEnable)(GL_LIGHT0);
+        // A warm point light with distance attenuation.
+        (gl.glLightfv)(GL_LIGHT1, GL_POSITION, [1.8f32, 1.0, 1.4, 1.0].as_ptr());
+        (gl.glLightfv)(GL_LIGHT1, GL_DIFFUSE, [0.9f32, 0.45, 0.15, 1.0].as_ptr());
+        (gl.glLightfv)(GL_LIGHT1, GL_SPECULAR, [1.0f32, 0.6, 0.3, 1.0].as_ptr());
+        (gl.glLightf)(GL_LIGHT1, GL_CONSTANT_ATTENUATION, 0.5);
+        (gl.glLightf)(GL_LIGHT1, GL_LINEAR_ATTENUATION, 0.2);
+        (gl.glLightf)(GL_LIGHT1, GL_QUADRATIC_ATTENUATION, 0.05);
+        (gl.glEnable)(GL_LIGHT1);
+        // A blue spot light shining down on the floor.
+        (gl.glLightfv)(GL_LIGHT2, GL_POSITION, [0.2f32, 2.6, 1.2, 1.0].as_ptr());
+        (gl.glLightfv)(GL_LIGHT2, GL_SPOT_DIRECTION, [-0.1f32, -1.0, 0.1].as_ptr());
+        (gl.glLightf)(GL_LIGHT2, GL_SPOT_CUTOFF, 28.0);
+        (gl.glLightf)(GL_LIGHT2, GL_SPOT_EXPONENT, 6.0);
+        (gl.glLightfv)(GL_LIGHT2, GL_DIFFUSE, [0.25f32, 0.45, 1.0, 1.0].as_ptr());
+        (gl.glLightfv)(GL_LIGHT2, GL_SPECULAR, [0.3f32, 0.5, 1.0, 1.0].as_ptr());
+        (gl.glEnable)(GL_LIGHT2);
+
+        // The floor: immediate mode quad strips, one normal for all.
+        let floor = [0.55f32, 0.55, 0.5, OBJECT_ALPHAS[1]];
+        (gl.glMaterialfv)(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, floor.as_ptr());
+        (gl.glMaterialfv)(
+            GL_FRONT_AND_BACK,
+            GL_SPECULAR,
+            [0.25f32, 0.25, 0.25, 1.0].as_ptr(),
+        );
+        (gl.glMaterialf)(GL_FRONT_AND_BACK, GL_SHININESS, 12.0);
+        let cells = 28;
+        let (x0, z0, size) = (-3.5f32, -3.5f32, 7.0f32);
+        (gl.glNormal3f)(0.0, 1.0, 0.0);
+        for i in 0..cells {
+            let xa = x0 + size * i as f32 / cells as f32;
+            let xb = x0 + size * (i + 1) as f32 / cells as f32;
+            (gl.glBegin)(GL_QUAD_STRIP);
+            for k in 0..=cells {
+                let z = z0 + size * k as f32 / cells as f32;
+                (gl.glVertex3f)(xb, -1.0, z);
+                (gl.glVertex3f)(xa, -1.0, z);
+            }
+            (gl.glEnd)();
+        }
+
+        // A sphere from vertex arrays, colored per vertex through color material.
+        let sphere = Sphere::new(20, 32, OBJECT_ALPHAS[2]);
+        let indices = sphere.triangle_indices();
+        (gl.glColorMaterial)(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+        (gl.glEnable)(GL_COLOR_MATERIAL);
+        (gl.glMaterialfv)(
+            GL_FRONT_AND_BACK,
+            GL_SPECULAR,
+            [0.6f32, 0.6, 0.6, 1.0].as_ptr(),
+        );
+        (gl.glMaterialf)(GL_FRONT_AND_BACK, GL_SHININESS, 40.0);
+        let positions = sphere.positions.as_ptr().cast::<c_void>();
+        (gl.glVertexPointer)(3, GL_FLOAT, 0, positions);
+        (gl.glNormalPointer)(GL_FLOAT, 0, positions);
+        (gl.glColorPointer)(4, GL_FLOAT, 0, sphere.colors.as_ptr().cast());
+        (gl.glEnableClientState)(GL_VERTEX_ARRAY);
+        (gl.glEnableClientState)(GL_NORMAL_ARRAY);
+        (gl.glEnableClientState)(GL_COLOR_ARRAY);
+        (gl.glPushMatrix)();
+        (gl.glTranslatef)(-1.35, -0.15, 0.2);
+        (gl.glScalef)(0.8, 0.8, 0.8);
+        (gl.glDrawElements)(
+            GL_TRIANGLES,
+            indices.len() as i32,
+            GL_UNSIGNED_SHORT,
+            indices.as_ptr().cast(),
+        );
+        (gl.glPopMatrix)();
+        (gl.glDisableClientState)(GL_COLOR_ARRAY);
+        (gl.glDisableClientState)(GL_NORMAL_ARRAY);
+        (gl.glDisableClientState)(GL_VERTEX_ARRAY);
+        (gl.glDisable)(GL_COLOR_MATERIAL);
+
+        // A display list of a sphere made of quad strips, called twice with different
+        // materials and a non-uniform scale (GL_NORMALIZE renormalizes its normals).
+        let shape = Sphere::new(16, 24, 1.0);
+        let list = (gl.glGenLists)(1);
+        (gl.glNewList)(list, GL_COMPILE);
+        for i in 0..shape.rows {
+            (gl.glBegin)(GL_QUAD_STRIP);
+            for j in 0..=shape.columns {
+                for p in [shape.index(i + 1, j), shape.index(i, j)] {
+                    (gl.glNormal3fv)(shape.positions[p].as_ptr());
+                    (gl.glVertex3fv)(shape.positions[p].as_ptr());
+                }
+            }
+            (gl.glEnd)();
+        }
+        (gl.glEndList)();
+
+        (gl.glMaterialfv)(GL_FRONT, GL_AMBIENT, [0.6f32, 0.1, 0.1, 1.0].as_ptr());
+        (gl.glMaterialfv)(
+            GL_FRONT,
+            GL_DIFFUSE,
+            [0.85f32, 0.12, 0.1, OBJECT_ALPHAS[3]].as_ptr(),
+        );
+        (gl.glMaterialfv)(GL_FRONT, GL_SPECULAR, [0.9f32, 0.9, 0.9, 1.0].as_ptr());
+        (gl.glMaterialf)(GL_FRONT, GL_SHININESS, 64.0);
+        (gl.glPushMatrix)();
+        (gl.glTranslatef)(0.55, -0.35, 0.7);
+        (gl.glScalef)(0.65, 0.65, 0.65);
+        (gl.glCallList)(list);
+        (gl.glPopMatrix)();
+
+        (gl.glMaterialfv)(GL_FRONT, GL_AMBIENT, [0.1f32, 0.3, 0.15, 1.0].as_ptr());
+        (gl.glMaterialfv)(
+            GL_FRONT,
+            GL_DIFFUSE,
+            [0.2f32, 0.7, 0.3, OBJECT_ALPHAS[4]].as_ptr(),
+        );
+        (gl.glMaterialfv)(GL_FRONT, GL_EMISSION, [0.0f32, 0.05, 0.02, 1.0].as_ptr());
+        (gl.glMaterialf)(GL_FRONT, GL_SHININESS, 16.0);
+        (gl.glPushMatrix)();
+        (gl.glTranslatef)(1.2, 0.1, -1.4);
+        (gl.glRotatef)(30.0, 0.0, 0.0, 1.0);
+        (gl.glScalef)(1.3, 0.8, 0.8);
+        (gl.glCallList)(list);
+        (gl.glPopMatrix)();
+
+        (gl.glDeleteLists)(list, 1);
+    }
+}
