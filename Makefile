@@ -3,12 +3,14 @@
 
 CARGO ?= cargo
 CC ?= cc
-PACKAGES := libosmesa6-dev libglu1-mesa-dev pkg-config gcc g++ cmake binutils valgrind make python3
+PACKAGES := libosmesa6-dev libglu1-mesa-dev pkg-config gcc g++ cmake binutils valgrind make python3 \
+	xvfb xauth libx11-dev libxext-dev libxrandr-dev libxinerama-dev libxcursor-dev libxi-dev \
+	libgl-dev libgl1-mesa-dri
 CFLAGS_STRICT := -std=c99 -Wall -Wextra -Werror -pedantic
 LIB := target/debug/libfflight.a
 DEMO_DIR := target/demo
 
-.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind
+.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind test-window
 
 all: build
 
@@ -33,6 +35,7 @@ lint:
 
 test: build
 	$(CARGO) test
+	$(MAKE) --no-print-directory test-window
 	$(MAKE) lint
 	$(MAKE) --no-print-directory test-install
 	$(MAKE) --no-print-directory test-sanitize
@@ -156,3 +159,18 @@ test-valgrind:
 		'valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite {} \
 		> /dev/null 2> {}.valgrind; if [ $$? = 99 ]; then echo "valgrind: {}"; cat {}.valgrind; exit 255; fi'
 	@echo "test-valgrind: $$(ls target/c_tests/*.fflight | wc -l) programs under memcheck, no error, no definite leak"
+
+# ---- legacy lighting in a real OpenGL 3.3 core window (examples/modern_window) ----
+# fflight's capture of a legacy lighting routine drawn in a GLFW core profile context, compared
+# pixel by pixel with Mesa's own fixed-function lighting in a compatibility context; writes
+# target/window/fflight-vs-gl.png (docs/fflight-vs-gl.png is a copy). Under Xvfb when there
+# is no $DISPLAY; LIBGL_ALWAYS_SOFTWARE=1 keeps both contexts on llvmpipe. About 2 s after
+# `cargo test`, which compiles the examples (and GLFW from source, with cmake). It depends on
+# deps, not build: a plain `cargo build` compiles the library without the dev-dependencies,
+# and switching between the two rebuilds it.
+WINDOW_DIR := target/window
+test-window: deps
+	@mkdir -p $(WINDOW_DIR)
+	$(CARGO) build --example modern_window
+	@if [ -n "$$DISPLAY" ]; then run=""; else run="xvfb-run -a"; fi; \
+	LIBGL_ALWAYS_SOFTWARE=1 timeout 120 $$run target/debug/examples/modern_window $(WINDOW_DIR)/fflight-vs-gl.png

@@ -187,7 +187,7 @@ impl fmt::Display for Report {
         )?;
         writeln!(
             f,
-            "largest difference {}/255 (tolerance {TOLERANCE}/255), mean {:.4}/255 per channel \
+            "largest difference {}/255 (tolerance {TOLERANCE}/255), mean {:.2e}/255 per channel \
              over object pixels, {} pixels differ at all",
             self.max, self.mean, self.differing
         )?;

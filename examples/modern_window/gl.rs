@@ -2,19 +2,24 @@
 //!
 //! Two implementations of the same GL names live in this process: fflight's entry points,
 //! linked statically into the executable from the fflight crate, and the system's GL (Mesa
-//! through libglvnd), which GLFW opens with `dlopen("libGL.so.1", RTLD_LOCAL)` when it makes a
-//! GLX context. They never meet because neither is found by a run-time lookup of its name in
-//! the process's global scope:
+//! through libglvnd), which GLFW opens with `dlopen("libGL.so.1")` when it makes a GLX
+//! context. They never get mixed up because no call here finds its function by name at run
+//! time:
 //!
 //! - [`Legacy::fflight`] takes fflight's functions through an `extern "C"` block: the static
 //!   linker resolves `glBegin` and the others to the definitions in fflight's rlib (the
 //!   executable links no libGL: GLFW loads it at run time), and the calls are direct calls
-//!   inside the executable.
+//!   inside the executable. An executable's references to its own definitions cannot be
+//!   interposed by a shared library.
 //! - `load` takes the system GL's functions from `glfwGetProcAddress` (`glXGetProcAddressARB`,
 //!   answered from libglvnd's dispatch table, which routes each call to the current
-//!   context's driver), never from the executable's symbols.
+//!   context's driver).
+//! - The other way round, nothing in the GL libraries can reach fflight's functions by name:
+//!   a Rust executable exports no symbol dynamically (`nm -D` lists no `gl*`). A lookup of
+//!   `glBegin` in the global scope does find one once the GL is loaded (libGLX_mesa's, in
+//!   Debian 12), which `main.rs` prints and checks is not fflight's.
 //!
-//! `main.rs` checks both directions at run time: the core context rejects
+//! `main.rs` also checks the outcome both ways: the core context rejects
 //! `glEnable(GL_LIGHTING)`, so no lit color can come from the system GL there, and the
 //! compatibility context draws lit pixels, which fflight (it has no rasterizer) cannot.
 

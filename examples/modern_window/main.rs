@@ -36,8 +36,8 @@ use glfw::Context as _;
 
 use gl::*;
 
-const WIDTH: u32 = 320;
-const HEIGHT: u32 = 240;
+const WIDTH: u32 = 400;
+const HEIGHT: u32 = 300;
 
 /// fflight's capture API as `include/fflight.h` declares it (fflight-only names: nothing in
 /// the system GL has them).
@@ -104,26 +104,16 @@ fn run(output: &str) -> Result<(), String> {
         glfw::OpenGlProfileHint::Core,
     ));
     glfw.window_hint(glfw::WindowHint::OpenGlForwardCompat(true));
-    let (mut core_window, _core_events) = glfw
-        .create_window(
-            WIDTH,
-            HEIGHT,
-            "fflight in a 3.3 core context",
-            glfw::WindowMode::Windowed,
-        )
-        .ok_or("no OpenGL 3.3 core profile context")?;
-    core_window.make_current();
-    let core = Core::load(|name| proc_address(&mut core_window, name))?;
-    let core_target = Target::load(|name| proc_address(&mut core_window, name))?;
-    let core_info = context_info(&core_target);
-    println!("core context:          {core_info}");
+    let mut core_window = GlWindow::open(&mut glfw, "fflight in a 3.3 core context", "core")?;
+    let core = Core::load(|name| core_window.proc_address(name))?;
+    let core_target = &core_window.target;
     // SAFETY (this block and the others calling GL): the tables were loaded from the context
     // current on this thread, or are fflight's, whose context is this thread's default one.
     unsafe {
         let mut profile = 0;
         (core_target.glGetIntegerv)(GL_CONTEXT_PROFILE_MASK, &mut profile);
         if profile & GL_CONTEXT_CORE_PROFILE_BIT == 0 {
-            return Err(format!("not a core profile context: {core_info}"));
+            return Err("not a core profile context".into());
         }
         (core.glEnable)(GL_LIGHTING);
         let error = (core.glGetError)();
@@ -161,38 +151,48 @@ fn run(output: &str) -> Result<(), String> {
 
     // 3. Drawn by a pass-through shader in the core context.
     let modern = unsafe {
-        let framebuffer = Offscreen::new(&core_target)?;
+        let framebuffer = Offscreen::new(core_target)?;
         draw_captured(&core, &triangles, &raster)?;
         check_error("core context", (core.glGetError)())?;
-        let pixels = framebuffer.read(&core_target);
-        framebuffer.show(&core_target);
+        let pixels = framebuffer.read(core_target);
+        framebuffer.show(core_target);
         pixels
     };
-    core_window.swap_buffers();
+    core_window.window.swap_buffers();
 
     // 4. The same routine lit by the system GL's fixed-function pipeline.
     glfw.default_window_hints();
-    let (mut compat_window, _compat_events) = glfw
-        .create_window(
-            WIDTH,
-            HEIGHT,
-            "the GL's own fixed-function lighting",
-            glfw::WindowMode::Windowed,
-        )
-        .ok_or("no compatibility profile context")?;
-    compat_window.make_current();
-    let system = Legacy::load(|name| proc_address(&mut compat_window, name))?;
-    let compat_target = Target::load(|name| proc_address(&mut compat_window, name))?;
-    println!("compatibility context: {}", context_info(&compat_target));
+    let mut compat_window = GlWindow::open(
+        &mut glfw,
+        "the GL's own fixed-function lighting",
+        "compatibility",
+    )?;
+    let system = Legacy::load(|name| compat_window.proc_address(name))?;
+    let compat_target = &compat_window.target;
+    // Two different glBegin functions. Whatever a lookup of the name in the process's global
+    // scope finds (the libraries GLFW and libglvnd opened may export glBegin), it is not
+    // fflight's: the executable exports no gl* symbol, and nothing here calls GL by name.
+    let global = global_symbol(c"glBegin");
+    println!(
+        "glBegin: fflight's at {:p}, the system GL's at {:p}; by name: {}",
+        fflight.glBegin as *const c_void,
+        system.glBegin as *const c_void,
+        global.as_ref().map_or("none", |(_, library)| library),
+    );
+    if fflight.glBegin as usize == system.glBegin as usize
+        || global.is_some_and(|(address, _)| address == fflight.glBegin as usize)
+    {
+        return Err("fflight's glBegin is reachable as the system GL's".into());
+    }
     let fixed_function = unsafe {
-        let framebuffer = Offscreen::new(&compat_target)?;
+        let framebuffer = Offscreen::new(compat_target)?;
         scene::draw(&system, WIDTH as i32, HEIGHT as i32);
         check_error("compatibility context", (system.glGetError)())?;
-        let pixels = framebuffer.read(&compat_target);
-        framebuffer.show(&compat_target);
+        let pixels = framebuffer.read(compat_target);
+        framebuffer.show(compat_target);
         pixels
     };
-    compat_window.swap_buffers();
+    compat_window.window.swap_buffers();
 
     // 5. The comparison.
     let report = compare::compare(&modern, &fixed_function, WIDTH as usize, HEIGHT as usize);
@@ -208,12 +208,65 @@ fn run(output: &str) -> Result<(), String> {
     report.verdict()
 }
 
+/// A WIDTH x HEIGHT window, its context, and the functions its framebuffer is read with.
+struct GlWindow {
+    window: glfw::PWindow,
+    _events: glfw::GlfwReceiver<(f64, glfw::WindowEvent)>,
+    target: Target,
+}
+
+impl GlWindow {
+    /// Opens a window with the current window hints and makes its context current.
+    fn open(glfw: &mut glfw::Glfw, title: &str, kind: &str) -> Result<GlWindow, String> {
+        let (mut window, events) = glfw
+            .create_window(WIDTH, HEIGHT, title, glfw::WindowMode::Windowed)
+            .ok_or(format!("no {kind} context"))?;
+        window.make_current();
+        let target = Target::load(|name| proc_address(&mut window, name))?;
+        println!(
+            "{:<22} {}",
+            format!("{kind} context:"),
+            context_info(&target)
+        );
+        Ok(GlWindow {
+            window,
+            _events: events,
+            target,
+        })
+    }
+
+    fn proc_address(&mut self, name: &str) -> *const c_void {
+        proc_address(&mut self.window, name)
+    }
+}
+
 /// The address of `name` in the context of `window` (made current), as glfwGetProcAddress
 /// gives it.
 fn proc_address(window: &mut glfw::PWindow, name: &str) -> *const c_void {
     window
         .get_proc_address(name)
         .map_or(std::ptr::null(), |f| f as *const c_void)
+}
+
+/// What `dlsym(RTLD_DEFAULT, name)` finds: its address and the library that defines it.
+fn global_symbol(name: &CStr) -> Option<(usize, String)> {
+    // SAFETY: dlsym and dladdr only look up; dladdr fills `info` with pointers to strings of
+    // the loaded library, read here while it stays loaded.
+    unsafe {
+        let address = libc::dlsym(libc::RTLD_DEFAULT, name.as_ptr());
+        if address.is_null() {
+            return None;
+        }
+        let mut info: libc::Dl_info = std::mem::zeroed();
+        let library = if libc::dladdr(address, &mut info) != 0 && !info.dli_fname.is_null() {
+            CStr::from_ptr(info.dli_fname)
+                .to_string_lossy()
+                .into_owned()
+        } else {
+            "?".into()
+        };
+        Some((address as usize, library))
+    }
 }
 
 fn context_info(gl: &Target) -> String {

@@ -98,8 +98,8 @@ pub unsafe fn draw(gl: &Legacy, width: i32, height: i32) {
         (gl.glFrustum)(-0.42 * aspect, 0.42 * aspect, -0.42, 0.42, 1.0, 30.0);
         (gl.glMatrixMode)(GL_MODELVIEW);
         (gl.glLoadIdentity)();
-        (gl.glTranslatef)(0.0, -0.25, -5.2);
-        (gl.glRotatef)(24.0, 1.0, 0.0, 0.0);
+        (gl.glTranslatef)(0.0, -0.1, -5.8);
+        (gl.glRotatef)(22.0, 1.0, 0.0, 0.0);
         (gl.glRotatef)(-12.0, 0.0, 1.0, 0.0);
 
         // Lights, placed in the world (after the viewing transform).
@@ -127,9 +127,9 @@ pub unsafe fn draw(gl: &Legacy, width: i32, height: i32) {
         (gl.glLightf)(GL_LIGHT1, GL_QUADRATIC_ATTENUATION, 0.05);
         (gl.glEnable)(GL_LIGHT1);
         // A blue spot light shining down on the floor.
-        (gl.glLightfv)(GL_LIGHT2, GL_POSITION, [0.2f32, 2.6, 1.2, 1.0].as_ptr());
-        (gl.glLightfv)(GL_LIGHT2, GL_SPOT_DIRECTION, [-0.1f32, -1.0, 0.1].as_ptr());
-        (gl.glLightf)(GL_LIGHT2, GL_SPOT_CUTOFF, 28.0);
+        (gl.glLightfv)(GL_LIGHT2, GL_POSITION, [-0.2f32, 2.8, -0.4, 1.0].as_ptr());
+        (gl.glLightfv)(GL_LIGHT2, GL_SPOT_DIRECTION, [0.05f32, -1.0, 0.2].as_ptr());
+        (gl.glLightf)(GL_LIGHT2, GL_SPOT_CUTOFF, 30.0);
         (gl.glLightf)(GL_LIGHT2, GL_SPOT_EXPONENT, 6.0);
         (gl.glLightfv)(GL_LIGHT2, GL_DIFFUSE, [0.25f32, 0.45, 1.0, 1.0].as_ptr());
         (gl.glLightfv)(GL_LIGHT2, GL_SPECULAR, [0.3f32, 0.5, 1.0, 1.0].as_ptr());
@@ -144,15 +144,15 @@ pub unsafe fn draw(gl: &Legacy, width: i32, height: i32) {
             [0.25f32, 0.25, 0.25, 1.0].as_ptr(),
         );
         (gl.glMaterialf)(GL_FRONT_AND_BACK, GL_SHININESS, 12.0);
-        let cells = 28;
-        let (x0, z0, size) = (-3.5f32, -3.5f32, 7.0f32);
+        let cells = 48;
+        let (x0, z0, width, depth) = (-6.0f32, -10.0f32, 12.0f32, 13.0f32);
         (gl.glNormal3f)(0.0, 1.0, 0.0);
         for i in 0..cells {
-            let xa = x0 + size * i as f32 / cells as f32;
-            let xb = x0 + size * (i + 1) as f32 / cells as f32;
+            let xa = x0 + width * i as f32 / cells as f32;
+            let xb = x0 + width * (i + 1) as f32 / cells as f32;
             (gl.glBegin)(GL_QUAD_STRIP);
             for k in 0..=cells {
-                let z = z0 + size * k as f32 / cells as f32;
+                let z = z0 + depth * k as f32 / cells as f32;
                 (gl.glVertex3f)(xb, -1.0, z);
                 (gl.glVertex3f)(xa, -1.0, z);
             }
@@ -209,34 +209,41 @@ pub unsafe fn draw(gl: &Legacy, width: i32, height: i32) {
         }
         (gl.glEndList)();
 
-        (gl.glMaterialfv)(GL_FRONT, GL_AMBIENT, [0.6f32, 0.1, 0.1, 1.0].as_ptr());
-        (gl.glMaterialfv)(
-            GL_FRONT,
-            GL_DIFFUSE,
-            [0.85f32, 0.12, 0.1, OBJECT_ALPHAS[3]].as_ptr(),
-        );
+        // Each instance: ambient, diffuse, emission, shininess; position, rotation about z,
+        // scale.
+        let instances = [
+            (
+                [0.6f32, 0.1, 0.1, 1.0],
+                [0.85f32, 0.12, 0.1, OBJECT_ALPHAS[3]],
+                [0.0f32, 0.0, 0.0, 1.0],
+                64.0,
+                [0.55f32, -0.35, 0.7],
+                0.0,
+                [0.65f32, 0.65, 0.65],
+            ),
+            (
+                [0.1, 0.3, 0.15, 1.0],
+                [0.2, 0.7, 0.3, OBJECT_ALPHAS[4]],
+                [0.0, 0.05, 0.02, 1.0],
+                16.0,
+                [1.2, 0.1, -1.4],
+                30.0,
+                [1.3, 0.8, 0.8],
+            ),
+        ];
         (gl.glMaterialfv)(GL_FRONT, GL_SPECULAR, [0.9f32, 0.9, 0.9, 1.0].as_ptr());
-        (gl.glMaterialf)(GL_FRONT, GL_SHININESS, 64.0);
-        (gl.glPushMatrix)();
-        (gl.glTranslatef)(0.55, -0.35, 0.7);
-        (gl.glScalef)(0.65, 0.65, 0.65);
-        (gl.glCallList)(list);
-        (gl.glPopMatrix)();
-
-        (gl.glMaterialfv)(GL_FRONT, GL_AMBIENT, [0.1f32, 0.3, 0.15, 1.0].as_ptr());
-        (gl.glMaterialfv)(
-            GL_FRONT,
-            GL_DIFFUSE,
-            [0.2f32, 0.7, 0.3, OBJECT_ALPHAS[4]].as_ptr(),
-        );
-        (gl.glMaterialfv)(GL_FRONT, GL_EMISSION, [0.0f32, 0.05, 0.02, 1.0].as_ptr());
-        (gl.glMaterialf)(GL_FRONT, GL_SHININESS, 16.0);
-        (gl.glPushMatrix)();
-        (gl.glTranslatef)(1.2, 0.1, -1.4);
-        (gl.glRotatef)(30.0, 0.0, 0.0, 1.0);
-        (gl.glScalef)(1.3, 0.8, 0.8);
-        (gl.glCallList)(list);
-        (gl.glPopMatrix)();
+        for (ambient, diffuse, emission, shininess, [x, y, z], angle, [sx, sy, sz]) in instances {
+            (gl.glMaterialfv)(GL_FRONT, GL_AMBIENT, ambient.as_ptr());
+            (gl.glMaterialfv)(GL_FRONT, GL_DIFFUSE, diffuse.as_ptr());
+            (gl.glMaterialfv)(GL_FRONT, GL_EMISSION, emission.as_ptr());
+            (gl.glMaterialf)(GL_FRONT, GL_SHININESS, shininess);
+            (gl.glPushMatrix)();
+            (gl.glTranslatef)(x, y, z);
+            (gl.glRotatef)(angle, 0.0, 0.0, 1.0);
+            (gl.glScalef)(sx, sy, sz);
+            (gl.glCallList)(list);
+            (gl.glPopMatrix)();
+        }
 
         (gl.glDeleteLists)(list, 1);
     }
