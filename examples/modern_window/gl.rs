@@ -112,7 +112,6 @@ gl_table! {
         fn glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei);
         fn glClearColor(r: GLfloat, g: GLfloat, b: GLfloat, a: GLfloat);
         fn glClear(mask: GLbitfield);
-        fn glCullFace(mode: GLenum);
         fn glFrontFace(mode: GLenum);
         fn glDepthFunc(func: GLenum);
         fn glShadeModel(mode: GLenum);

@@ -8,11 +8,11 @@
 //! 1. GLFW opens a window with an OpenGL 3.3 **core** context, where fixed-function lighting
 //!    does not exist (the example checks: `glEnable(GL_LIGHTING)` is `GL_INVALID_ENUM` there).
 //! 2. The legacy routine (`scene.rs`: lights, materials, color material, glBegin/glEnd quad
-//!    strips, vertex arrays with glDrawElements, a display list called twice) runs unchanged
-//!    through fflight between `fflCaptureBegin` and `fflCaptureEnd`.
+//!    strips, vertex arrays with glDrawElements, a display list called twice, two-sided
+//!    lighting) runs unchanged through fflight between `fflCaptureBegin` and `fflCaptureEnd`.
 //! 3. The captured triangles (clip coordinates and lit colors of both faces) are drawn in the
 //!    core context by a pass-through shader, with the raster state the routine set, read
-//!    back from fflight (viewport, clear color, depth test, culling, shade model).
+//!    back from fflight (viewport, clear color, depth test, culling, front face, shade model).
 //! 4. A second window with a compatibility context runs the same routine through the system
 //!    GL (Mesa's llvmpipe under Xvfb), which lights it with its own fixed-function pipeline.
 //! 5. Both framebuffers (RGBA8, the same size) are read back with glReadPixels and compared
@@ -290,7 +290,9 @@ fn check_error(what: &str, error: GLenum) -> Result<(), String> {
 }
 
 /// The rasterization state the legacy routine set, read back from fflight: what the renderer
-/// of the captured triangles must apply itself (fflight does not rasterize).
+/// of the captured triangles must apply itself (fflight does not rasterize). It is read once,
+/// after the routine; a routine that changed it between draws would need it per draw (the
+/// captured primitives say which draw they come from), which this renderer does not do.
 struct RasterState {
     viewport: [GLint; 4],
     clear_color: [GLfloat; 4],

@@ -12,10 +12,19 @@ use std::ffi::c_void;
 
 use crate::gl::*;
 
-/// Alpha of each object: the clear color's, the floor's, the vertex-array sphere's and the two
-/// display-list spheres'. Multiples of 1/255, so that both GLs store exactly k in RGBA8 (a
-/// value halfway between two steps could round either way).
-pub const OBJECT_ALPHAS: [f32; 5] = [0.0, 96.0 / 255.0, 160.0 / 255.0, 224.0 / 255.0, 1.0];
+/// Alpha of each object: the clear color's, the floor's, the vertex-array sphere's, the two
+/// display-list spheres', the tube's outside (front faces) and inside (back faces). Multiples
+/// of 1/255, so that both GLs store exactly k in RGBA8 (a value halfway between two steps
+/// could round either way).
+pub const OBJECT_ALPHAS: [f32; 7] = [
+    0.0,
+    96.0 / 255.0,
+    160.0 / 255.0,
+    224.0 / 255.0,
+    1.0,
+    192.0 / 255.0,
+    128.0 / 255.0,
+];
 
 /// A sphere of `stacks` x `slices` quads around the origin, radius 1: positions (which are also
 /// the normals), and a color per vertex.
@@ -87,8 +96,6 @@ pub unsafe fn draw(gl: &Legacy, width: i32, height: i32) {
         (gl.glClear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         (gl.glEnable)(GL_DEPTH_TEST);
         (gl.glDepthFunc)(GL_LESS);
-        (gl.glEnable)(GL_CULL_FACE);
-        (gl.glCullFace)(GL_BACK);
         (gl.glFrontFace)(GL_CCW);
         (gl.glShadeModel)(GL_SMOOTH);
 
@@ -246,5 +253,33 @@ pub unsafe fn draw(gl: &Legacy, width: i32, height: i32) {
         }
 
         (gl.glDeleteLists)(list, 1);
+
+        // An open tube lit on both sides: the outside (front faces) with the front material,
+        // the inside (back faces) with the back material and the reversed normal. No culling
+        // in this scene: the tube's back faces must be drawn.
+        (gl.glLightModeli)(GL_LIGHT_MODEL_TWO_SIDE, 1);
+        let outside = [0.95f32, 0.7, 0.25, OBJECT_ALPHAS[5]];
+        (gl.glMaterialfv)(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, outside.as_ptr());
+        (gl.glMaterialfv)(GL_FRONT, GL_EMISSION, [0.0f32, 0.0, 0.0, 1.0].as_ptr());
+        (gl.glMaterialf)(GL_FRONT, GL_SHININESS, 32.0);
+        let inside = [0.3f32, 0.5, 0.9, OBJECT_ALPHAS[6]];
+        (gl.glMaterialfv)(GL_BACK, GL_AMBIENT_AND_DIFFUSE, inside.as_ptr());
+        (gl.glMaterialfv)(GL_BACK, GL_SPECULAR, [0.5f32, 0.5, 0.5, 1.0].as_ptr());
+        (gl.glMaterialf)(GL_BACK, GL_SHININESS, 24.0);
+        (gl.glPushMatrix)();
+        (gl.glTranslatef)(2.0, -0.3, 1.0);
+        (gl.glRotatef)(32.0, 1.0, 0.0, 0.0);
+        let (radius, half_height, slices) = (0.45f32, 0.45f32, 32);
+        (gl.glBegin)(GL_QUAD_STRIP);
+        for j in 0..=slices {
+            let phi = 2.0 * PI * j as f32 / slices as f32;
+            let (x, z) = (phi.cos(), phi.sin());
+            (gl.glNormal3f)(x, 0.0, z);
+            (gl.glVertex3f)(radius * x, -half_height, radius * z);
+            (gl.glVertex3f)(radius * x, half_height, radius * z);
+        }
+        (gl.glEnd)();
+        (gl.glPopMatrix)();
+        (gl.glLightModeli)(GL_LIGHT_MODEL_TWO_SIDE, 0);
     }
 }
