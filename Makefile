@@ -4,7 +4,7 @@
 CARGO ?= cargo
 CC ?= cc
 PACKAGES := libosmesa6-dev libglu1-mesa-dev pkg-config gcc g++ cmake binutils valgrind make python3 \
-	xvfb xauth libx11-dev libxext-dev libxrandr-dev libxinerama-dev libxcursor-dev libxi-dev \
+	xvfb libx11-dev libxext-dev libxrandr-dev libxinerama-dev libxcursor-dev libxi-dev \
 	libgl-dev libgl1-mesa-dri
 CFLAGS_STRICT := -std=c99 -Wall -Wextra -Werror -pedantic
 LIB := target/debug/libfflight.a
@@ -163,14 +163,14 @@ test-valgrind:
 # ---- legacy lighting in a real OpenGL 3.3 core window (examples/modern_window) ----
 # fflight's capture of a legacy lighting routine drawn in a GLFW core profile context, compared
 # pixel by pixel with Mesa's own fixed-function lighting in a compatibility context; writes
-# target/window/fflight-vs-gl.png (docs/fflight-vs-gl.png is a copy). Under Xvfb when there
-# is no $DISPLAY; LIBGL_ALWAYS_SOFTWARE=1 keeps both contexts on llvmpipe. About 2 s after
-# `cargo test`, which compiles the examples (and GLFW from source, with cmake). It depends on
-# deps, not build: a plain `cargo build` compiles the library without the dev-dependencies,
-# and switching between the two rebuilds it.
+# target/window/fflight-vs-gl.png (docs/fflight-vs-gl.png is a copy). Under a private Xvfb
+# when there is no $DISPLAY (tools/with-display.sh); LIBGL_ALWAYS_SOFTWARE=1 keeps both
+# contexts on llvmpipe. About 2 s after `cargo test`, which compiles the examples (and GLFW
+# from source, with cmake). It depends on deps, not build: a plain `cargo build` compiles the
+# library without the dev-dependencies, and switching between the two rebuilds it.
 WINDOW_DIR := target/window
 test-window: deps
 	@mkdir -p $(WINDOW_DIR)
 	$(CARGO) build --example modern_window
-	@if [ -n "$$DISPLAY" ]; then run=""; else run="xvfb-run -a"; fi; \
-	LIBGL_ALWAYS_SOFTWARE=1 timeout 120 $$run target/debug/examples/modern_window $(WINDOW_DIR)/fflight-vs-gl.png
+	LIBGL_ALWAYS_SOFTWARE=1 tools/with-display.sh \
+		timeout 120 target/debug/examples/modern_window $(WINDOW_DIR)/fflight-vs-gl.png
