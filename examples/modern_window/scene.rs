@@ -1,5 +1,6 @@
 //! The legacy routine: a lit scene written as OpenGL 1.x programs draw one, with lights,
-//! materials, color material, glBegin/glEnd, vertex arrays and a display list. It calls GL
+//! materials, color material, glBegin/glEnd, vertex arrays, a display list and two-sided
+//! lighting. It calls GL
 //! only through the [`Legacy`] table it is given and does not know whose GL that is: fflight
 //! (captured) or the system GL's fixed-function pipeline.
 //!
