@@ -480,13 +480,21 @@ static inline int ffl_fb_finish(ffl_fb *fb, const char *tag, ffl_vertex_note not
                                     user, &fb->counts);
 }
 
+/* Called after each vertex ffl_print_feedback_segments_note prints, before its newline:
+ * `vertices` the token's vertices (vertex_size values each), `nverts` their number, `k`
+ * the vertex printed and `offset` its index in the buffer. */
+typedef void (*ffl_segment_note)(void *user, GLenum token, const GLfloat *vertices, int nverts,
+                                 int k, GLint offset, GLenum type);
+
 /* Prints a feedback buffer of points, line segments and polygons (no pass-through
  * markers) like ffl_print_feedback, but every segment as "segment" whether its token is
  * GL_LINE_TOKEN or GL_LINE_RESET_TOKEN: for line primitives drawn by code that is not the
  * test's (libGLU's), where the stipple resets cannot be marked and OSMesa never feeds back
- * GL_LINE_RESET_TOKEN (docs/osmesa-differences.md, 1). */
-static inline void ffl_print_feedback_segments(const char *tag, const GLfloat *buf, GLint n,
-                                               GLenum type)
+ * GL_LINE_RESET_TOKEN (docs/osmesa-differences.md, 1). `note` (may be NULL) adds to each
+ * vertex line. */
+static inline void ffl_print_feedback_segments_note(const char *tag, const GLfloat *buf, GLint n,
+                                                    GLenum type, ffl_segment_note note,
+                                                    void *user)
 {
     GLint i = 0;
     int vs = ffl_feedback_vertex_size(type), k, count;
@@ -508,12 +516,26 @@ static inline void ffl_print_feedback_segments(const char *tag, const GLfloat *b
             return;
         }
         printf("%s %s %d\n", tag, name, count);
-        for (k = 0; k < count && i + vs <= n; k++, i += vs) {
+        if (i + (GLint)count * vs > n) {
+            printf("%s truncated\n", tag);
+            return;
+        }
+        for (k = 0; k < count; k++) {
             printf("%s  v", tag);
-            ffl_print_feedback_vertex(buf + i, type);
+            ffl_print_feedback_vertex(buf + i + k * vs, type);
+            if (note != NULL)
+                note(user, token, buf + i, count, k, i + k * vs, type);
             printf("\n");
         }
+        i += count * vs;
     }
+}
+
+/* ffl_print_feedback_segments_note without a note. */
+static inline void ffl_print_feedback_segments(const char *tag, const GLfloat *buf, GLint n,
+                                               GLenum type)
+{
+    ffl_print_feedback_segments_note(tag, buf, n, type, NULL, NULL);
 }
 
 /* ---- selection ------------------------------------------------------------ */

@@ -883,6 +883,7 @@ c_programs!(
     osmesa_diff_zero_pow_zero,
     osmesa_diff_get_integer,
     osmesa_diff_vertex_w,
+    osmesa_diff_zero_area_facing,
     osmesa_diff_line_reset,
     osmesa_diff_flat_feedback,
     osmesa_diff_edge_flags,

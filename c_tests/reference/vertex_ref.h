@@ -154,8 +154,9 @@ static inline void vref_note(void *user, GLenum mode, GLenum token, const GLfloa
      * lighting; a one-sided back face uses the front colors */
     if (s->ref->lighting && s->ref->two_side && mode != GL_POINTS && !ffl_is_line_mode(mode)) {
         if (token == GL_POLYGON_TOKEN && nverts >= 3) {
+            /* front only if a > 0 (CCW) or -a > 0 (CW): zero area is back facing */
             double area = vref_area(vertices, nverts, size);
-            face = (area > 0.0) == (s->front_ccw != 0) ? 0 : 1;
+            face = (s->front_ccw ? area > 0.0 : area < 0.0) ? 0 : 1;
         } else if (s->polygon_face >= 0) {
             face = s->polygon_face;
         } else {
