@@ -963,6 +963,7 @@ c_programs!(
     dlist_images,
     legacy_redbook_scene,
     legacy_bezier_patches,
+    legacy_torus_envmap,
     thread_exit_context,
     dlist_call_lists,
     dlist_arrays,
