@@ -964,6 +964,7 @@ c_programs!(
     legacy_redbook_scene,
     legacy_bezier_patches,
     legacy_torus_envmap,
+    legacy_multitexture_quad,
     thread_exit_context,
     dlist_call_lists,
     dlist_arrays,
