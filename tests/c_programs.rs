@@ -965,6 +965,7 @@ c_programs!(
     legacy_bezier_patches,
     legacy_torus_envmap,
     legacy_multitexture_quad,
+    legacy_nurbs_surface,
     thread_exit_context,
     dlist_call_lists,
     dlist_arrays,
