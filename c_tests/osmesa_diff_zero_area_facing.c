@@ -81,12 +81,7 @@ int main(void)
 
     ffl_test_init();
     ref_init(&ref);
-    glViewport(0, 0, 64, 64);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(-10, 10, -10, 10, -10, 10);
-    glMatrixMode(GL_MODELVIEW);
-    mirror_load_identity(&ref);
+    mirror_box_view(&ref, 10);
     mirror_light4f(&ref, GL_LIGHT0, GL_POSITION, 0.2f, 0.3f, 1, 0);
     mirror_light4f(&ref, GL_LIGHT1, GL_POSITION, -0.2f, 0.1f, -1, 0);
     mirror_light4f(&ref, GL_LIGHT1, GL_DIFFUSE, 0.8f, 0.8f, 0.8f, 1);

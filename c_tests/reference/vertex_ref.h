@@ -281,12 +281,7 @@ static inline int vref_run_primitive_program(const GLenum *modes, int mode_count
 
     ffl_test_init();
     ref_init(&ref);
-    glViewport(0, 0, 64, 64);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(-10, 10, -10, 10, -10, 10);
-    glMatrixMode(GL_MODELVIEW);
-    mirror_load_identity(&ref);
+    mirror_box_view(&ref, 10);
     mirror_rotatef(&ref, 25, 0.3f, 0.2f, 1);
 
     failed |= vref_pass_modes(&vref, "unlit", &ref, modes, mode_count, max_count, seed);

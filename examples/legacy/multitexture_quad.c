@@ -10,9 +10,7 @@
  */
 #include <GL/gl.h>
 #include <stdio.h>
-#ifdef FFL_OSMESA
-#include <GL/osmesa.h>
-#endif
+#include "legacy_feedback.h"
 
 #define QUAD_IMAGE_SIZE 16
 #define QUAD_GRID 3
@@ -127,43 +125,17 @@ static void display(void)
 
 static GLfloat quad_feedback[QUAD_FEEDBACK_SIZE];
 
-/* Prints the triangles fed back: window position, color, unit 0's texture coordinates. */
-static void print_quad_feedback(GLint n)
-{
-    GLint i = 0;
-    int k, count;
-    printf("quad count %d\n", (int)n);
-    while (i < n) {
-        if ((GLint)quad_feedback[i++] != GL_POLYGON_TOKEN || i >= n) {
-            printf("quad unexpected token\n");
-            return;
-        }
-        count = (int)quad_feedback[i++];
-        printf("quad polygon %d\n", count);
-        for (k = 0; k < count && i + 11 <= n; k++, i += 11) {
-            const GLfloat *v = quad_feedback + i;
-            printf("quad  v xyz %.9g %.9g %.9g rgba %.9g %.9g %.9g %.9g strq %.9g %.9g %.9g "
-                   "%.9g\n",
-                   v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10]);
-        }
-    }
-}
-
 int main(void)
 {
     int unit;
-#ifdef FFL_OSMESA
-    static GLubyte color_buffer[64 * 64 * 4];
-    OSMesaContext context = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-    if (context == NULL || !OSMesaMakeCurrent(context, color_buffer, GL_UNSIGNED_BYTE, 64, 64))
+    if (legacy_make_current() != 0)
         return 1;
-#endif
     init();
     reshape(64, 64);
     glFeedbackBuffer(QUAD_FEEDBACK_SIZE, GL_3D_COLOR_TEXTURE, quad_feedback);
     glRenderMode(GL_FEEDBACK);
     display();
-    print_quad_feedback(glRenderMode(GL_RENDER));
+    legacy_print_feedback("quad", quad_feedback, glRenderMode(GL_RENDER), GL_3D_COLOR_TEXTURE);
     /* Each unit's coordinates at a raster position, through its own texture matrix. */
     glRasterPos3f(0.25f, -0.5f, 0.0f);
     for (unit = 0; unit < 2; unit++) {

@@ -12,9 +12,7 @@
 #include <GL/gl.h>
 #include <GL/glu.h>
 #include <stdio.h>
-#ifdef FFL_OSMESA
-#include <GL/osmesa.h>
-#endif
+#include "legacy_feedback.h"
 
 #define NURBS_FEEDBACK_SIZE 65536
 
@@ -88,51 +86,22 @@ static void display(void)
 
 static GLfloat nurbs_feedback[NURBS_FEEDBACK_SIZE];
 
-/* Prints the primitives fed back: window position and color of each vertex. */
-static void print_nurbs_feedback(const char *tag, GLint n)
-{
-    GLint i = 0;
-    int k, count;
-    printf("%s count %d\n", tag, (int)n);
-    while (i < n) {
-        GLint token = (GLint)nurbs_feedback[i++];
-        if (token == GL_POLYGON_TOKEN && i < n)
-            count = (int)nurbs_feedback[i++];
-        else if (token == GL_LINE_TOKEN || token == GL_LINE_RESET_TOKEN)
-            count = 2;
-        else {
-            printf("%s unexpected token %d\n", tag, (int)token);
-            return;
-        }
-        printf("%s %s %d\n", tag, count == 2 ? "segment" : "polygon", count);
-        for (k = 0; k < count && i + 7 <= n; k++, i += 7)
-            printf("%s  v xyz %.9g %.9g %.9g rgba %.9g %.9g %.9g %.9g\n", tag,
-                   nurbs_feedback[i], nurbs_feedback[i + 1], nurbs_feedback[i + 2],
-                   nurbs_feedback[i + 3], nurbs_feedback[i + 4], nurbs_feedback[i + 5],
-                   nurbs_feedback[i + 6]);
-    }
-}
-
 int main(void)
 {
-#ifdef FFL_OSMESA
-    static GLubyte color_buffer[64 * 64 * 4];
-    OSMesaContext context = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-    if (context == NULL || !OSMesaMakeCurrent(context, color_buffer, GL_UNSIGNED_BYTE, 64, 64))
+    if (legacy_make_current() != 0)
         return 1;
-#endif
     init();
     reshape(64, 64);
     glFeedbackBuffer(NURBS_FEEDBACK_SIZE, GL_3D_COLOR, nurbs_feedback);
     glRenderMode(GL_FEEDBACK);
     display();
-    print_nurbs_feedback("fill", glRenderMode(GL_RENDER));
+    legacy_print_feedback("fill", nurbs_feedback, glRenderMode(GL_RENDER), GL_3D_COLOR);
 
     gluNurbsProperty(surface, GLU_DISPLAY_MODE, GLU_OUTLINE_POLYGON);
     glFeedbackBuffer(NURBS_FEEDBACK_SIZE, GL_3D_COLOR, nurbs_feedback);
     glRenderMode(GL_FEEDBACK);
     display();
-    print_nurbs_feedback("outline", glRenderMode(GL_RENDER));
+    legacy_print_feedback("outline", nurbs_feedback, glRenderMode(GL_RENDER), GL_3D_COLOR);
     printf("nurbs error %d\n", (int)glGetError());
     gluDeleteNurbsRenderer(surface);
     return 0;

@@ -10,9 +10,7 @@
 #include <GL/gl.h>
 #include <math.h>
 #include <stdio.h>
-#ifdef FFL_OSMESA
-#include <GL/osmesa.h>
-#endif
+#include "legacy_feedback.h"
 
 #define TORUS_PI 3.14159265358979323846
 #define ENVIRONMENT_SIZE 32
@@ -126,42 +124,17 @@ static void display(void)
 
 static GLfloat torus_feedback[TORUS_FEEDBACK_SIZE];
 
-/* Prints the triangles fed back: window position, color, texture coordinates. */
-static void print_torus_feedback(GLint n)
-{
-    GLint i = 0;
-    int k, count;
-    printf("torus count %d\n", (int)n);
-    while (i < n) {
-        if ((GLint)torus_feedback[i++] != GL_POLYGON_TOKEN || i >= n) {
-            printf("torus unexpected token\n");
-            return;
-        }
-        count = (int)torus_feedback[i++];
-        printf("torus polygon %d\n", count);
-        for (k = 0; k < count && i + 11 <= n; k++, i += 11) {
-            const GLfloat *v = torus_feedback + i;
-            printf("torus  v xyz %.9g %.9g %.9g rgba %.9g %.9g %.9g %.9g strq %.9g %.9g %.9g "
-                   "%.9g\n",
-                   v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10]);
-        }
-    }
-}
-
 int main(void)
 {
-#ifdef FFL_OSMESA
-    static GLubyte color_buffer[64 * 64 * 4];
-    OSMesaContext context = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-    if (context == NULL || !OSMesaMakeCurrent(context, color_buffer, GL_UNSIGNED_BYTE, 64, 64))
+    if (legacy_make_current() != 0)
         return 1;
-#endif
     init();
     reshape(64, 64);
     glFeedbackBuffer(TORUS_FEEDBACK_SIZE, GL_3D_COLOR_TEXTURE, torus_feedback);
     glRenderMode(GL_FEEDBACK);
     display();
-    print_torus_feedback(glRenderMode(GL_RENDER));
+    legacy_print_feedback("torus", torus_feedback, glRenderMode(GL_RENDER),
+                          GL_3D_COLOR_TEXTURE);
     printf("torus error %d\n", (int)glGetError());
     return 0;
 }
