@@ -5,8 +5,9 @@
  * satisfies a <= 0 under glFrontFace(GL_CCW) (-a <= 0 under GL_CW), so a triangle
  * of zero area takes the back colors under either winding; culling takes a polygon
  * as front facing only if the sign is positive, so GL_CULL_FACE with GL_BACK
- * discards it and GL_FRONT keeps it. OSMesa (the draw module's two-side stage
- * tests det < 0 for the back face) gives such triangles their front colors.
+ * discards it and GL_FRONT keeps it. OSMesa (the draw module's two-side stage takes the
+ * back colors only when det * sign < 0) gives such triangles their front colors; its
+ * culling is as the spec's.
  * gluSphere with texture coordinates makes such triangles at its poles
  * (glu_quadrics_tess.c). Triangles with two coincident corners and with three
  * collinear corners, under both windings, front material red and back material
