@@ -480,13 +480,21 @@ static inline int ffl_fb_finish(ffl_fb *fb, const char *tag, ffl_vertex_note not
                                     user, &fb->counts);
 }
 
+/* Called after each vertex ffl_print_feedback_segments_note prints, before its newline:
+ * `vertices` the token's vertices (vertex_size values each), `nverts` their number, `k`
+ * the vertex printed and `offset` its index in the buffer. */
+typedef void (*ffl_segment_note)(void *user, GLenum token, const GLfloat *vertices, int nverts,
+                                 int k, GLint offset, GLenum type);
+
 /* Prints a feedback buffer of points, line segments and polygons (no pass-through
  * markers) like ffl_print_feedback, but every segment as "segment" whether its token is
  * GL_LINE_TOKEN or GL_LINE_RESET_TOKEN: for line primitives drawn by code that is not the
  * test's (libGLU's), where the stipple resets cannot be marked and OSMesa never feeds back
- * GL_LINE_RESET_TOKEN (docs/osmesa-differences.md, 1). */
-static inline void ffl_print_feedback_segments(const char *tag, const GLfloat *buf, GLint n,
-                                               GLenum type)
+ * GL_LINE_RESET_TOKEN (docs/osmesa-differences.md, 1). `note` (may be NULL) adds to each
+ * vertex line. */
+static inline void ffl_print_feedback_segments_note(const char *tag, const GLfloat *buf, GLint n,
+                                                    GLenum type, ffl_segment_note note,
+                                                    void *user)
 {
     GLint i = 0;
     int vs = ffl_feedback_vertex_size(type), k, count;
@@ -508,12 +516,71 @@ static inline void ffl_print_feedback_segments(const char *tag, const GLfloat *b
             return;
         }
         printf("%s %s %d\n", tag, name, count);
-        for (k = 0; k < count && i + vs <= n; k++, i += vs) {
+        if (i + (GLint)count * vs > n) {
+            printf("%s truncated\n", tag);
+            return;
+        }
+        for (k = 0; k < count; k++) {
             printf("%s  v", tag);
-            ffl_print_feedback_vertex(buf + i, type);
+            ffl_print_feedback_vertex(buf + i + k * vs, type);
+            if (note != NULL)
+                note(user, token, buf + i, count, k, i + k * vs, type);
             printf("\n");
         }
+        i += count * vs;
     }
+}
+
+/* ffl_print_feedback_segments_note without a note. */
+static inline void ffl_print_feedback_segments(const char *tag, const GLfloat *buf, GLint n,
+                                               GLenum type)
+{
+    ffl_print_feedback_segments_note(tag, buf, n, type, NULL, NULL);
+}
+
+/* qsort order of GL_3D_COLOR vertices on coarse keys (1/256): two builds differ in the
+ * last float digits. */
+static inline int ffl_compare_vertices(const void *a, const void *b)
+{
+    const GLfloat *u = (const GLfloat *)a, *v = (const GLfloat *)b;
+    int k;
+    for (k = 0; k < 7; k++) {
+        long ku = lround(u[k] * 256.0), kv = lround(v[k] * 256.0);
+        if (ku != kv)
+            return ku < kv ? -1 : 1;
+    }
+    return 0;
+}
+
+#define FFL_VERTEX_SET_MAX 65536
+
+/* A GL_3D_COLOR feedback buffer of polygons printed as its number of polygons and its
+ * distinct vertices in a fixed order: what any split of the same quads into triangles
+ * shares (glEvalMesh2(GL_FILL): OSMesa draws triangle strips where the spec has quad
+ * strips, docs/osmesa-differences.md, 20). */
+static inline void ffl_print_vertex_set(const char *tag, const GLfloat *buf, GLint n)
+{
+    static GLfloat vertices[FFL_VERTEX_SET_MAX * 7];
+    GLint i = 0;
+    int polygons = 0, count = 0, k, distinct = 0;
+    while (i < n && (GLenum)buf[i] == GL_POLYGON_TOKEN) {
+        int nverts = (int)buf[i + 1];
+        polygons++;
+        i += 2;
+        for (k = 0; k < nverts && i + 7 <= n && count < FFL_VERTEX_SET_MAX; k++, i += 7)
+            memcpy(vertices + 7 * count++, buf + i, 7 * sizeof buf[0]);
+    }
+    printf("%s count %d polygons %d parsed %d\n", tag, (int)n, polygons, i == n);
+    qsort(vertices, (size_t)count, 7 * sizeof vertices[0], ffl_compare_vertices);
+    for (k = 0; k < count; k++) {
+        if (k > 0 && ffl_compare_vertices(vertices + 7 * k, vertices + 7 * (k - 1)) == 0)
+            continue;
+        distinct++;
+        printf("%s  v", tag);
+        ffl_print_feedback_vertex(vertices + 7 * k, GL_3D_COLOR);
+        printf("\n");
+    }
+    printf("%s distinct %d\n", tag, distinct);
 }
 
 /* ---- selection ------------------------------------------------------------ */

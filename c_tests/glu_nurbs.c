@@ -21,45 +21,6 @@
 
 static GLfloat buf[BUF_SIZE];
 
-static int compare_vertices(const void *a, const void *b)
-{
-    const GLfloat *u = a, *v = b;
-    int k;
-    for (k = 0; k < 7; k++) {
-        /* Coarse keys: the builds differ in the last float digits. */
-        long ku = lround(u[k] * 256.0), kv = lround(v[k] * 256.0);
-        if (ku != kv)
-            return ku < kv ? -1 : 1;
-    }
-    return 0;
-}
-
-/* A GLU_FILL pass: its polygon count and its distinct vertices in a fixed order. */
-static void print_vertex_set(const char *tag, GLint n)
-{
-    static GLfloat vertices[BUF_SIZE];
-    GLint i = 0;
-    int polygons = 0, count = 0, k, distinct = 0;
-    while (i < n && (GLenum)buf[i] == GL_POLYGON_TOKEN) {
-        int nverts = (int)buf[i + 1];
-        polygons++;
-        i += 2;
-        for (k = 0; k < nverts && i + 7 <= n; k++, i += 7)
-            memcpy(vertices + 7 * count++, buf + i, 7 * sizeof buf[0]);
-    }
-    printf("%s count %d polygons %d parsed %d\n", tag, (int)n, polygons, i == n);
-    qsort(vertices, (size_t)count, 7 * sizeof vertices[0], compare_vertices);
-    for (k = 0; k < count; k++) {
-        if (k > 0 && compare_vertices(vertices + 7 * k, vertices + 7 * (k - 1)) == 0)
-            continue;
-        distinct++;
-        printf("%s  v", tag);
-        ffl_print_feedback_vertex(vertices + 7 * k, GL_3D_COLOR);
-        printf("\n");
-    }
-    printf("%s distinct %d\n", tag, distinct);
-}
-
 int main(void)
 {
     static const GLenum display_modes[3] = { GLU_FILL, GLU_OUTLINE_POLYGON, GLU_OUTLINE_PATCH };
@@ -119,7 +80,7 @@ int main(void)
             if (d == 0) {
                 n = glRenderMode(GL_RENDER);
                 sprintf(tag, "%s_%s_surface", display_names[d], sampling_names[s]);
-                print_vertex_set(tag, n);
+                ffl_print_vertex_set(tag, buf, n);
                 glFeedbackBuffer(BUF_SIZE, GL_3D_COLOR, buf);
                 glRenderMode(GL_FEEDBACK);
             }

@@ -136,16 +136,22 @@ static inline void mirror_mult_matrixf(ref_state *ref, const float *m)
     ref_mult_matrixf(ref, m);
 }
 
-/* A 64x64 viewport and an orthographic box large enough for every test
- * vertex, with the modelview selected and set to identity (GL and ref). */
-static inline void mirror_standard_view(ref_state *ref)
+/* A 64x64 viewport and the orthographic box of +-half on every axis, with the
+ * modelview selected and set to identity (GL and ref). */
+static inline void mirror_box_view(ref_state *ref, double half)
 {
     glViewport(0, 0, 64, 64);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
-    glOrtho(-100, 100, -100, 100, -100, 100);
+    glOrtho(-half, half, -half, half, -half, half);
     glMatrixMode(GL_MODELVIEW);
     mirror_load_identity(ref);
+}
+
+/* mirror_box_view large enough for every test vertex. */
+static inline void mirror_standard_view(ref_state *ref)
+{
+    mirror_box_view(ref, 100);
 }
 
 /* ---- the stored state --------------------------------------------------- */

@@ -154,8 +154,9 @@ static inline void vref_note(void *user, GLenum mode, GLenum token, const GLfloa
      * lighting; a one-sided back face uses the front colors */
     if (s->ref->lighting && s->ref->two_side && mode != GL_POINTS && !ffl_is_line_mode(mode)) {
         if (token == GL_POLYGON_TOKEN && nverts >= 3) {
+            /* front only if a > 0 (CCW) or -a > 0 (CW): zero area is back facing */
             double area = vref_area(vertices, nverts, size);
-            face = (area > 0.0) == (s->front_ccw != 0) ? 0 : 1;
+            face = (s->front_ccw ? area > 0.0 : area < 0.0) ? 0 : 1;
         } else if (s->polygon_face >= 0) {
             face = s->polygon_face;
         } else {
@@ -280,12 +281,7 @@ static inline int vref_run_primitive_program(const GLenum *modes, int mode_count
 
     ffl_test_init();
     ref_init(&ref);
-    glViewport(0, 0, 64, 64);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(-10, 10, -10, 10, -10, 10);
-    glMatrixMode(GL_MODELVIEW);
-    mirror_load_identity(&ref);
+    mirror_box_view(&ref, 10);
     mirror_rotatef(&ref, 25, 0.3f, 0.2f, 1);
 
     failed |= vref_pass_modes(&vref, "unlit", &ref, modes, mode_count, max_count, seed);
