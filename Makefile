@@ -8,7 +8,7 @@ CFLAGS_STRICT := -std=c99 -Wall -Wextra -Werror -pedantic
 LIB := target/debug/libfflight.a
 DEMO_DIR := target/demo
 
-.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind
+.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind prefixed
 
 all: build
 
@@ -69,6 +69,15 @@ bench:
 clean:
 	$(CARGO) clean
 
+# Every GL entry point renamed ffl_glX in a static library of its own, for programs that also
+# link a real GL library (docs/coexistence.md): target/prefixed/libfflight_prefixed.a, declared
+# by include/fflight_prefixed.h (tests/prefixed.rs checks both and links one with OSMesa).
+PREFIXED_LIB := target/prefixed/libfflight_prefixed.a
+prefixed:
+	$(CARGO) build $(if $(filter release,$(PROFILE)),--release,)
+	@mkdir -p target/prefixed
+	tools/prefix_library.sh target/$(PROFILE)/libfflight.a $(PREFIXED_LIB)
+
 # ---- installation: make install PREFIX=/usr/local DESTDIR= (PROFILE=release) ----
 # The shared library as libfflight.so.VERSION with the SONAME libfflight.so.MAJOR (set by
 # build.rs) and its two links, the static library, the header, a pkg-config file and a CMake
@@ -81,17 +90,19 @@ MAJOR := $(firstword $(subst ., ,$(VERSION)))
 INSTALL_ROOT = $(DESTDIR)$(PREFIX)
 INSTALLED = lib/libfflight.so.$(VERSION) lib/libfflight.so.$(MAJOR) lib/libfflight.so \
 	lib/libfflight.a include/fflight.h lib/pkgconfig/fflight.pc \
+	lib/libfflight_prefixed.a include/fflight_prefixed.h \
 	lib/cmake/fflight/fflightConfig.cmake lib/cmake/fflight/fflightConfigVersion.cmake
 SUBSTITUTE = sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@MAJOR@|$(MAJOR)|g'
 
-install:
-	$(CARGO) build $(if $(filter release,$(PROFILE)),--release,)
+install: prefixed
 	install -d $(INSTALL_ROOT)/lib/pkgconfig $(INSTALL_ROOT)/lib/cmake/fflight $(INSTALL_ROOT)/include
 	install -m 755 target/$(PROFILE)/libfflight.so $(INSTALL_ROOT)/lib/libfflight.so.$(VERSION)
 	ln -sf libfflight.so.$(VERSION) $(INSTALL_ROOT)/lib/libfflight.so.$(MAJOR)
 	ln -sf libfflight.so.$(MAJOR) $(INSTALL_ROOT)/lib/libfflight.so
 	install -m 644 target/$(PROFILE)/libfflight.a $(INSTALL_ROOT)/lib/libfflight.a
 	install -m 644 include/fflight.h $(INSTALL_ROOT)/include/fflight.h
+	install -m 644 $(PREFIXED_LIB) $(INSTALL_ROOT)/lib/libfflight_prefixed.a
+	install -m 644 include/fflight_prefixed.h $(INSTALL_ROOT)/include/fflight_prefixed.h
 	$(SUBSTITUTE) build/install/fflight.pc.in > $(INSTALL_ROOT)/lib/pkgconfig/fflight.pc
 	$(SUBSTITUTE) build/install/fflightConfig.cmake.in > $(INSTALL_ROOT)/lib/cmake/fflight/fflightConfig.cmake
 	$(SUBSTITUTE) build/install/fflightConfigVersion.cmake.in > $(INSTALL_ROOT)/lib/cmake/fflight/fflightConfigVersion.cmake
