@@ -38,13 +38,21 @@ test: build
 	$(MAKE) --no-print-directory test-sanitize
 	$(MAKE) --no-print-directory test-valgrind
 
-demo: build
+# The demo scene (examples/demo/scene.c: a lit sphere on a lit floor, three lights) through
+# fflight and through OSMesa, fed back and compared: a short summary, the raw rows in
+# target/demo/{fflight,osmesa}.txt (VERBOSE=1 prints them side by side), and both renderings
+# with a map of their differences in target/demo/fflight-vs-osmesa.png.
+DEMO_PACKAGES := python3-pil
+demo:
+	@$(MAKE) --no-print-directory deps PACKAGES="$(PACKAGES) $(DEMO_PACKAGES)"
+	$(CARGO) build
 	@mkdir -p $(DEMO_DIR)
 	$(CC) $(CFLAGS_STRICT) -D_DEFAULT_SOURCE examples/demo/scene.c $(LIB) -lm -lpthread -ldl -o $(DEMO_DIR)/scene_fflight
 	$(CC) $(CFLAGS_STRICT) -D_DEFAULT_SOURCE -DUSE_OSMESA examples/demo/scene.c -lOSMesa -lm -o $(DEMO_DIR)/scene_osmesa
 	$(DEMO_DIR)/scene_fflight > $(DEMO_DIR)/fflight.txt
 	$(DEMO_DIR)/scene_osmesa > $(DEMO_DIR)/osmesa.txt
-	python3 examples/demo/compare.py $(DEMO_DIR)/fflight.txt $(DEMO_DIR)/osmesa.txt
+	@$(BENCH_PYTHON) examples/demo/compare.py $(DEMO_DIR)/fflight.txt $(DEMO_DIR)/osmesa.txt \
+		--picture $(DEMO_DIR)/fflight-vs-osmesa.png $(if $(VERBOSE),--verbose,)
 
 # fflight (release) vs OSMesa on the same scenes in the same run: one table of ns per vertex,
 # speed ratios and targets (also target/bench/results.md), and a plot against the number of
