@@ -17,6 +17,14 @@ pub enum GlError {
 
 impl GlError {
     /// The GL enum value of this error.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, GlError};
+    /// assert_eq!(GlError::InvalidEnum.code(), GL_INVALID_ENUM);
+    /// assert_eq!(GlError::StackOverflow.code(), GL_STACK_OVERFLOW);
+    /// ```
     pub fn code(self) -> GLenum {
         match self {
             GlError::InvalidEnum => GL_INVALID_ENUM,
@@ -38,11 +46,32 @@ pub type GlResult<T = ()> = Result<T, GlError>;
 pub struct ErrorFlag(Option<GlError>);
 
 impl ErrorFlag {
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{error::ErrorFlag, gl::*, GlError};
+    /// let mut flag = ErrorFlag::default();
+    /// flag.record(GlError::InvalidValue);
+    /// flag.record(GlError::InvalidOperation); // ignored: the first error stays
+    /// assert_eq!(flag.take(), GL_INVALID_VALUE);
+    /// ```
     pub fn record(&mut self, error: GlError) {
         self.0.get_or_insert(error);
     }
 
     /// `glGetError`: returns the recorded error and clears it.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{error::ErrorFlag, gl::*, GlError};
+    /// let mut flag = ErrorFlag::default();
+    /// assert_eq!(flag.take(), GL_NO_ERROR);
+    /// flag.record(GlError::OutOfMemory);
+    /// assert_eq!(flag.take(), GL_OUT_OF_MEMORY);
+    /// assert_eq!(flag.take(), GL_NO_ERROR);
+    /// ```
     pub fn take(&mut self) -> GLenum {
         self.0.take().map_or(GL_NO_ERROR, GlError::code)
     }
