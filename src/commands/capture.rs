@@ -66,6 +66,25 @@ impl FloatLayout {
 impl Context {
     /// fflCaptureBegin: starts capturing the primitives of every draw, dropping what an
     /// earlier capture collected. GL_INVALID_OPERATION between glBegin and glEnd.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// use glam::Vec4;
+    /// let mut ctx = Context::new();
+    /// ctx.capture_begin()?;
+    /// ctx.begin(GL_TRIANGLES)?;
+    /// for x in [0.0, 1.0, 0.0] {
+    ///     ctx.vertex(Vec4::new(x, x, -1.0, 1.0));
+    /// }
+    /// ctx.end()?;
+    /// ctx.capture_end()?;
+    /// let capture = ctx.captured();
+    /// assert_eq!((capture.vertices().len(), capture.primitives().len()), (3, 1));
+    /// assert_eq!(capture.primitives()[0].kind, GL_TRIANGLES);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn capture_begin(&mut self) -> GlResult {
         self.outside_begin_end()?;
         self.capture.start();
@@ -75,6 +94,20 @@ impl Context {
     /// fflCaptureEnd: stops capturing; what was collected stays readable.
     /// GL_INVALID_OPERATION between glBegin and glEnd (the primitive in progress is not drawn
     /// yet).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.capture_begin()?;
+    /// ctx.capture_end()?;
+    /// ctx.begin(GL_POINTS)?; // not captured: capture ended
+    /// ctx.vertex(glam::Vec4::W);
+    /// ctx.end()?;
+    /// assert!(ctx.captured().vertices().is_empty());
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn capture_end(&mut self) -> GlResult {
         self.outside_begin_end()?;
         self.capture.stop();
@@ -82,6 +115,24 @@ impl Context {
     }
 
     /// What capture collected.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.set_capability(GL_LIGHTING, true)?;
+    /// ctx.set_capability(GL_LIGHT0, true)?;
+    /// ctx.capture_begin()?;
+    /// ctx.begin(GL_POINTS)?;
+    /// ctx.vertex(glam::Vec4::new(0.0, 0.0, -1.0, 1.0));
+    /// ctx.end()?;
+    /// ctx.capture_end()?;
+    /// let lit = ctx.captured().vertices()[0].colors.front.primary;
+    /// // Light 0 from +z on the default normal: ambient 0.2 * 0.2 plus diffuse 0.8.
+    /// assert!((lit.x - 0.84).abs() < 1e-6);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn captured(&self) -> &Capture {
         &self.capture
     }
@@ -92,6 +143,26 @@ impl Context {
     /// glColor, glNormal, glVertex would give the vertex in immediate mode; the current
     /// attributes are left unchanged, and nothing is drawn or captured. GL_INVALID_OPERATION
     /// between glBegin and glEnd.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// use glam::{Vec3, Vec4};
+    /// let mut ctx = Context::new();
+    /// ctx.set_capability(GL_LIGHTING, true)?;
+    /// ctx.set_capability(GL_LIGHT0, true)?;
+    /// let normals = [Vec3::Z, Vec3::X];
+    /// let mut red = [0.0; 2];
+    /// ctx.light_vertices_with(
+    ///     2,
+    ///     |i| (Vec4::new(i as f32, 0.0, 0.0, 1.0), Some(normals[i]), None),
+    ///     |i, lit| red[i] = lit.colors.front.primary.x,
+    /// )?;
+    /// // Facing the light: 0.04 + 0.8; at right angles to it: the ambient part only.
+    /// assert!((red[0] - 0.84).abs() < 1e-6 && (red[1] - 0.04).abs() < 1e-6);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn light_vertices_with(
         &mut self,
         count: usize,
@@ -175,6 +246,22 @@ impl Context {
     /// `light_vertices_with` over slices: one result per position in `out`. Normals and
     /// colors, when given, and `out` must have an element per position (else
     /// GL_INVALID_VALUE). Large counts are split across threads.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::vertex::ProcessedVertex, Context};
+    /// use glam::{Vec3, Vec4};
+    /// let mut ctx = Context::new();
+    /// ctx.set_capability(GL_LIGHTING, true)?;
+    /// ctx.set_capability(GL_LIGHT0, true)?;
+    /// let positions = vec![Vec4::new(0.0, 0.0, -1.0, 1.0); 100];
+    /// let normals = vec![Vec3::Z; 100];
+    /// let mut out = vec![ProcessedVertex::default(); 100];
+    /// ctx.light_vertices(&positions, Some(&normals), None, &mut out)?;
+    /// assert!(out.iter().all(|v| (v.colors.front.primary.x - 0.84).abs() < 1e-6));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn light_vertices(
         &mut self,
         positions: &[Vec4],
