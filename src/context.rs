@@ -31,8 +31,11 @@ use crate::state::rasterization::{
 /// glRenderMode's modes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RenderMode {
+    /// GL_RENDER: primitives are rasterized (here: go nowhere but capture).
     Render,
+    /// GL_FEEDBACK (§5.3).
     Feedback,
+    /// GL_SELECT (§5.2).
     Select,
 }
 

@@ -5,11 +5,17 @@ use crate::gl::*;
 /// One GL error, as `glGetError` reports it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum GlError {
+    /// GL_INVALID_ENUM: an enumerated argument out of range.
     InvalidEnum,
+    /// GL_INVALID_VALUE: a numeric argument out of range.
     InvalidValue,
+    /// GL_INVALID_OPERATION: not allowed in the current state.
     InvalidOperation,
+    /// GL_STACK_OVERFLOW: a push on a full stack.
     StackOverflow,
+    /// GL_STACK_UNDERFLOW: a pop of an empty stack.
     StackUnderflow,
+    /// GL_OUT_OF_MEMORY.
     OutOfMemory,
     /// GL_TABLE_TOO_LARGE (the imaging subset, §3.6.3).
     TableTooLarge,

@@ -41,11 +41,21 @@ pub fn index_size(index_type: GLenum) -> Option<usize> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ElementIndices<'a> {
     /// glDrawArrays: `first`, `first + 1`, ..., `count` of them.
-    Sequential { first: usize, count: usize },
+    Sequential {
+        /// The first element.
+        first: usize,
+        /// How many elements.
+        count: usize,
+    },
     /// glDrawElements: indices of `index_type` (GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT or
     /// GL_UNSIGNED_INT) in native byte order, at any alignment; a partial index at the end
     /// is ignored.
-    Listed { index_type: GLenum, bytes: &'a [u8] },
+    Listed {
+        /// GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT or GL_UNSIGNED_INT.
+        index_type: GLenum,
+        /// The indices' bytes.
+        bytes: &'a [u8],
+    },
 }
 
 impl ElementIndices<'_> {
@@ -59,6 +69,7 @@ impl ElementIndices<'_> {
         }
     }
 
+    /// Whether the draw has no vertex.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
@@ -108,7 +119,9 @@ impl ElementIndices<'_> {
 /// enabled are not read.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ArraySources<'a> {
+    /// The first element any array's bytes hold.
     pub base: usize,
+    /// Each array's bytes by `ArrayKind`, empty for the arrays that are not read.
     pub bytes: [&'a [u8]; ARRAY_KINDS],
 }
 

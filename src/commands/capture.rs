@@ -19,7 +19,9 @@ use crate::threads::threads_for;
 /// bytes in and has `size` floats.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FloatLayout {
+    /// Floats per element (a position has 2 to 4).
     pub size: usize,
+    /// Bytes from one element to the next (0 given: tightly packed, made explicit here).
     pub stride: usize,
 }
 
@@ -310,10 +312,15 @@ const CHUNK_BLOCKS: usize = 16;
 /// secondary).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BulkLayout {
+    /// How many vertices to light.
     pub count: usize,
+    /// The positions: 2, 3 or 4 floats each.
     pub positions: FloatLayout,
+    /// The normals (3 floats), or size 0 for the current normal.
     pub normals: FloatLayout,
+    /// The colors (4 floats), or size 0 for the current color.
     pub colors: FloatLayout,
+    /// Eye position, clip position, front primary, front secondary, back primary and back secondary color, 4 floats each (size 0: not written).
     pub outputs: [FloatLayout; 6],
 }
 

@@ -11,6 +11,7 @@ use crate::state::raster::MAX_VIEWPORT_DIMS;
 /// to the address glFeedbackBuffer or glSelectBuffer was given.
 #[derive(Debug, Default, PartialEq)]
 pub struct FinishedFeedback {
+    /// Where the application asked the values to go (glFeedbackBuffer's or glSelectBuffer's pointer); the Rust API ignores it.
     pub address: usize,
     /// Feedback: the values fed back.
     pub values: Vec<f32>,

@@ -318,7 +318,7 @@ impl Context {
         Ok(())
     }
 
-    /// glConvolutionParameter{if}[v]: the border mode (scalar or vector), the border color,
+    /// glConvolutionParameter{if}\[v\]: the border mode (scalar or vector), the border color,
     /// the filter scale and bias (vector only).
     pub fn convolution_parameter(
         &mut self,

@@ -34,11 +34,17 @@ pub enum Command {
     /// A command whose arguments failed its checks at compile time: the error, raised when
     /// the list executes.
     Error(GlError),
+    /// glColor (every form, converted to floats at compile time).
     Color(Vec4),
+    /// glNormal.
     Normal(Vec3),
+    /// glTexCoord.
     TexCoord(Vec4),
+    /// glEdgeFlag.
     EdgeFlag(bool),
+    /// glVertex.
     Vertex(Vec4),
+    /// glRasterPos.
     RasterPos(Vec4),
     /// glCallLists: its offsets, decoded at compile time; the list base is the one in force
     /// when the list executes.
@@ -55,16 +61,22 @@ pub enum Command {
 /// An image command of a display list.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ImageCommand {
+    /// glTexImage1D/2D/3D: the dimension count and the arguments.
     TexImage(usize, TexImageArgs),
+    /// glTexSubImage1D/2D/3D: the dimension count and the arguments.
     TexSubImage(usize, SubImageArgs),
+    /// glPolygonStipple.
     PolygonStipple,
 }
 
 /// An image command with its client bytes and the unpack modes they were given under.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RecordedImage {
+    /// Which command.
     pub command: ImageCommand,
+    /// The unpack modes in force at compile time.
     pub unpack: PixelStoreModes,
+    /// The client bytes the command read at compile time.
     pub bytes: Vec<u8>,
 }
 

@@ -20,8 +20,11 @@ pub const MAX_ELEMENTS: i32 = 3000;
 /// A queried state value in its own type; §6.1.2 converts it to the type asked for.
 #[derive(Clone, Debug, PartialEq)]
 pub enum StateValue {
+    /// Booleans (glGetBooleanv's natural type).
     Bools(Vec<bool>),
+    /// Integers; colors among them are converted as §6.1.2 says when read as floats.
     Ints(Vec<i32>),
+    /// Floating-point values, kept in double.
     Floats(Vec<f64>),
     /// Colors, normals and the depth range: mapped linearly to integers when asked as such.
     Normalized(Vec<f64>),

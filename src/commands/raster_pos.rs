@@ -18,9 +18,11 @@ use crate::state::texture_image::{format_components, pixel_type};
 pub struct RasterPosition {
     /// Window x, y, z and the clip w.
     pub window: Vec4,
+    /// GL_CURRENT_RASTER_POSITION_VALID.
     pub valid: bool,
     /// The front primary color, lit when lighting is on.
     pub color: Vec4,
+    /// The front secondary color, lit when lighting is on.
     pub secondary_color: Vec4,
     /// Texture unit 0's texture coordinates, generated and through the texture matrix.
     pub tex_coord: Vec4,

@@ -21,8 +21,11 @@ use crate::state::texture_image::{
 /// (0 otherwise), and whether it is a proxy.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ImageTarget {
+    /// The texture target (1D, 2D, 3D or cube map).
     pub target: Target,
+    /// The cube map face, 0 to 5 (0 for other targets).
     pub face: usize,
+    /// A GL_PROXY_* target: checked, never stored.
     pub proxy: bool,
 }
 
@@ -90,24 +93,36 @@ fn image_size(dimensions: usize, size: [GLsizei; 3]) -> [GLsizei; 3] {
 /// The arguments of glTexImage1D/2D/3D.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TexImageArgs {
+    /// `target`, as given.
     pub target: GLenum,
+    /// The mipmap level.
     pub level: GLint,
+    /// The requested internal format (a base format, a sized one, or 1 to 4).
     pub internal_format: GLint,
     /// Width, height, depth; the unused ones ignored.
     pub size: [GLsizei; 3],
+    /// The border width, 0 or 1.
     pub border: GLint,
+    /// The format of the client pixels.
     pub format: GLenum,
+    /// The type of the client pixels.
     pub ty: GLenum,
 }
 
 /// The arguments of glTexSubImage1D/2D/3D and glCopyTexSubImage (format and type unused).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SubImageArgs {
+    /// `target`, as given.
     pub target: GLenum,
+    /// The mipmap level.
     pub level: GLint,
+    /// x, y, z offset of the region in the image; the unused ones ignored.
     pub offset: [GLint; 3],
+    /// Width, height, depth of the region; the unused ones ignored.
     pub size: [GLsizei; 3],
+    /// The format of the client pixels.
     pub format: GLenum,
+    /// The type of the client pixels.
     pub ty: GLenum,
 }
 

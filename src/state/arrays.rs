@@ -10,12 +10,19 @@ use crate::state::texture::MAX_TEXTURE_UNITS;
 /// The arrays fflight draws from, in the order `VertexArrays` stores them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ArrayKind {
+    /// GL_VERTEX_ARRAY.
     Vertex,
+    /// GL_NORMAL_ARRAY.
     Normal,
+    /// GL_COLOR_ARRAY.
     Color,
+    /// GL_TEXTURE_COORD_ARRAY (of the client active texture unit).
     TexCoord,
+    /// GL_EDGE_FLAG_ARRAY.
     EdgeFlag,
+    /// GL_SECONDARY_COLOR_ARRAY.
     SecondaryColor,
+    /// GL_FOG_COORD_ARRAY.
     FogCoord,
     /// Color indices: made current by glArrayElement, used by nothing in RGBA mode.
     Index,
@@ -126,9 +133,11 @@ pub fn component_size(component_type: GLenum) -> Option<usize> {
 /// One vertex array's state (table 6.8).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ClientArray {
+    /// Enabled with glEnableClientState.
     pub enabled: bool,
     /// Components per element.
     pub size: i32,
+    /// The component type (GL_FLOAT, GL_SHORT, ...).
     pub component_type: GLenum,
     /// Bytes from one element to the next as specified: 0 means tightly packed.
     pub stride: i32,
@@ -224,7 +233,9 @@ pub fn read_components(bytes: &[u8], component_type: GLenum, normalize: bool, ou
 /// Where one enabled array's bytes for a draw are: `len` bytes at `address`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ByteSpan {
+    /// The first byte.
     pub address: usize,
+    /// How many bytes.
     pub len: usize,
 }
 
@@ -242,6 +253,7 @@ pub struct VertexArrays {
     /// The buffer objects bound to GL_ARRAY_BUFFER (copied into each array whose pointer is
     /// set) and GL_ELEMENT_ARRAY_BUFFER (where glDrawElements finds its indices).
     pub array_buffer: u32,
+    /// See `array_buffer`.
     pub element_array_buffer: u32,
 }
 

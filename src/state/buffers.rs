@@ -15,8 +15,11 @@ pub struct BufferObject {
     /// Shared so that a draw can read it while the context changes (nothing writes a store
     /// a draw reads: a mapped store cannot be drawn from).
     pub data: Arc<Vec<u8>>,
+    /// GL_BUFFER_USAGE.
     pub usage: GLenum,
+    /// GL_BUFFER_ACCESS, given by glMapBuffer.
     pub access: GLenum,
+    /// GL_BUFFER_MAPPED.
     pub mapped: bool,
 }
 

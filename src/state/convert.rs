@@ -97,6 +97,7 @@ pub fn fixed(x: i32) -> f32 {
     fixed_f64(x) as f32
 }
 
+/// A 16.16 fixed-point value in double, exactly.
 pub fn fixed_f64(x: i32) -> f64 {
     f64::from(x) / 65536.0
 }

@@ -9,12 +9,17 @@ pub const MAX_EVAL_ORDER: usize = 30;
 
 /// The nine kinds of map, in the order of their enums (GL_MAP1_COLOR_4 ... GL_MAP1_VERTEX_4).
 pub const MAP_KINDS: usize = 9;
+/// GL_MAPn_COLOR_4.
 pub const COLOR_4: usize = 0;
+/// GL_MAPn_INDEX.
 pub const INDEX: usize = 1;
+/// GL_MAPn_NORMAL.
 pub const NORMAL: usize = 2;
 /// GL_MAPn_TEXTURE_COORD_1; _2, _3 and _4 follow.
 pub const TEXTURE_COORD_1: usize = 3;
+/// GL_MAPn_VERTEX_3.
 pub const VERTEX_3: usize = 7;
+/// GL_MAPn_VERTEX_4.
 pub const VERTEX_4: usize = 8;
 
 /// Values a control point of map kind `kind` has (table 5.1's k).
@@ -55,9 +60,11 @@ fn initial_point(kind: usize) -> Vec<f32> {
 /// compacted: point (i, j) (i along u) at `(i * vorder + j) * k`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Map {
+    /// The order along u and along v.
     pub order: [usize; 2],
     /// u1, u2 (and v1, v2).
     pub domain: [f64; 4],
+    /// The control points, compacted (see above).
     pub points: Vec<f32>,
 }
 
@@ -74,7 +81,9 @@ impl Map {
 /// A grid (glMapGrid): segments and domain along u (and v).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Grid {
+    /// The number of segments along u and along v.
     pub segments: [i32; 2],
+    /// u1, u2, v1, v2.
     pub domain: [f64; 4],
 }
 
@@ -93,12 +102,14 @@ impl Default for Grid {
 pub struct EvalAttribs {
     /// GL_MAP1_* and GL_MAP2_* enables, by dimension - 1 and kind.
     pub enabled: [[bool; MAP_KINDS]; 2],
+    /// The grid of glMapGrid1 and of glMapGrid2.
     pub grids: [Grid; 2],
 }
 
 /// Every map of both dimensions.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Maps {
+    /// The maps by dimension - 1 and kind.
     pub maps: [[Map; MAP_KINDS]; 2],
 }
 
@@ -218,8 +229,11 @@ impl Maps {
 /// normals).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Evaluated {
+    /// The k values at the point.
     pub value: [f64; 4],
+    /// Their derivatives with respect to u.
     pub du: [f64; 4],
+    /// Their derivatives with respect to v.
     pub dv: [f64; 4],
 }
 

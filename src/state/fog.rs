@@ -9,15 +9,23 @@ use crate::gl::*;
 /// state tables put in the same group).
 #[derive(Clone, Debug, PartialEq)]
 pub struct FogAttribs {
+    /// GL_FOG.
     pub enabled: bool,
+    /// GL_COLOR_SUM.
     pub color_sum: bool,
     /// Clamped to [0, 1].
     pub color: Vec4,
+    /// GL_FOG_INDEX.
     pub index: f32,
+    /// GL_FOG_DENSITY.
     pub density: f32,
+    /// GL_FOG_START.
     pub start: f32,
+    /// GL_FOG_END.
     pub end: f32,
+    /// GL_FOG_MODE.
     pub mode: GLenum,
+    /// GL_FOG_COORD_SRC.
     pub coord_src: GLenum,
 }
 

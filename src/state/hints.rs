@@ -17,6 +17,7 @@ pub const HINT_TARGETS: [GLenum; 7] = [
 /// The hint attribute group (GL_HINT_BIT): each target's mode, in `HINT_TARGETS` order.
 #[derive(Clone, Debug, PartialEq)]
 pub struct HintAttribs {
+    /// Each target's mode (GL_DONT_CARE, GL_FASTEST or GL_NICEST).
     pub modes: [GLenum; HINT_TARGETS.len()],
 }
 

@@ -12,16 +12,27 @@ pub const MAX_LIGHTS: usize = 8;
 /// transformed by the modelview matrix in force when they were specified.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Light {
+    /// GL_LIGHTi enabled.
     pub enabled: bool,
+    /// GL_AMBIENT.
     pub ambient: Vec4,
+    /// GL_DIFFUSE.
     pub diffuse: Vec4,
+    /// GL_SPECULAR.
     pub specular: Vec4,
+    /// GL_POSITION, in eye coordinates (taken through the modelview matrix when set).
     pub eye_position: Vec4,
+    /// GL_SPOT_DIRECTION, in eye coordinates (through the modelview's upper 3x3 when set).
     pub eye_spot_direction: Vec3,
+    /// GL_SPOT_EXPONENT.
     pub spot_exponent: f32,
+    /// GL_SPOT_CUTOFF, in degrees.
     pub spot_cutoff: f32,
+    /// GL_CONSTANT_ATTENUATION.
     pub constant_attenuation: f32,
+    /// GL_LINEAR_ATTENUATION.
     pub linear_attenuation: f32,
+    /// GL_QUADRATIC_ATTENUATION.
     pub quadratic_attenuation: f32,
 }
 

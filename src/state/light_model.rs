@@ -5,10 +5,14 @@ use glam::Vec4;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
 
+/// The light model (§2.14.1, glLightModel).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LightModel {
+    /// GL_LIGHT_MODEL_AMBIENT.
     pub ambient: Vec4,
+    /// GL_LIGHT_MODEL_LOCAL_VIEWER.
     pub local_viewer: bool,
+    /// GL_LIGHT_MODEL_TWO_SIDE.
     pub two_side: bool,
     /// GL_SINGLE_COLOR or GL_SEPARATE_SPECULAR_COLOR.
     pub color_control: GLenum,
@@ -57,6 +61,7 @@ impl LightModel {
         Ok(())
     }
 
+    /// Whether GL_LIGHT_MODEL_COLOR_CONTROL is GL_SEPARATE_SPECULAR_COLOR.
     pub fn separate_specular(&self) -> bool {
         self.color_control == GL_SEPARATE_SPECULAR_COLOR
     }

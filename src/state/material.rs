@@ -7,15 +7,21 @@ use crate::gl::*;
 
 /// Index of the front and back material in `[Material; 2]`.
 pub const FRONT: usize = 0;
+/// Index of the back material.
 pub const BACK: usize = 1;
 
 /// The material of one face.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Material {
+    /// GL_AMBIENT.
     pub ambient: Vec4,
+    /// GL_DIFFUSE.
     pub diffuse: Vec4,
+    /// GL_SPECULAR.
     pub specular: Vec4,
+    /// GL_EMISSION.
     pub emission: Vec4,
+    /// GL_SHININESS.
     pub shininess: f32,
     /// GL_COLOR_INDEXES: ambient, diffuse and specular indexes (stored for queries only).
     pub color_indexes: [f32; 3],
@@ -39,22 +45,32 @@ impl Default for Material {
 pub struct MaterialMask(pub u8);
 
 impl MaterialMask {
+    /// No property.
     pub const NONE: MaterialMask = MaterialMask(0);
+    /// GL_AMBIENT.
     pub const AMBIENT: MaterialMask = MaterialMask(1);
+    /// GL_DIFFUSE.
     pub const DIFFUSE: MaterialMask = MaterialMask(2);
+    /// GL_SPECULAR.
     pub const SPECULAR: MaterialMask = MaterialMask(4);
+    /// GL_EMISSION.
     pub const EMISSION: MaterialMask = MaterialMask(8);
+    /// GL_SHININESS.
     pub const SHININESS: MaterialMask = MaterialMask(16);
+    /// GL_COLOR_INDEXES.
     pub const COLOR_INDEXES: MaterialMask = MaterialMask(32);
 
+    /// Whether every property of `other` is in the set (never for the empty set).
     pub fn contains(self, other: MaterialMask) -> bool {
         self.0 & other.0 == other.0 && other.0 != 0
     }
 
+    /// The properties of both sets.
     pub fn union(self, other: MaterialMask) -> MaterialMask {
         MaterialMask(self.0 | other.0)
     }
 
+    /// The properties of `self` that are not in `other`.
     pub fn without(self, other: MaterialMask) -> MaterialMask {
         MaterialMask(self.0 & !other.0)
     }
@@ -157,8 +173,11 @@ impl Material {
 /// glColorMaterial state (§2.14.3).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ColorMaterial {
+    /// GL_COLOR_MATERIAL.
     pub enabled: bool,
+    /// GL_COLOR_MATERIAL_FACE.
     pub face: GLenum,
+    /// GL_COLOR_MATERIAL_PARAMETER.
     pub mode: GLenum,
 }
 

@@ -6,8 +6,11 @@ use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use crate::state::texture::MAX_TEXTURE_UNITS;
 
+/// GL_MAX_MODELVIEW_STACK_DEPTH.
 pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
+/// GL_MAX_PROJECTION_STACK_DEPTH.
 pub const MAX_PROJECTION_STACK_DEPTH: usize = 32;
+/// GL_MAX_TEXTURE_STACK_DEPTH.
 pub const MAX_TEXTURE_STACK_DEPTH: usize = 10;
 /// GL_MAX_COLOR_MATRIX_STACK_DEPTH (Mesa's).
 pub const MAX_COLOR_MATRIX_STACK_DEPTH: usize = 4;
@@ -20,30 +23,36 @@ pub struct MatrixStack {
 }
 
 impl MatrixStack {
+    /// A stack holding the identity, of at most `max_depth` matrices.
     pub fn new(max_depth: usize) -> MatrixStack {
         let mut entries = Vec::with_capacity(max_depth);
         entries.push(Mat4::IDENTITY);
         MatrixStack { entries, max_depth }
     }
 
+    /// The current matrix.
     pub fn top(&self) -> &Mat4 {
         self.entries.last().expect("a matrix stack is never empty")
     }
 
+    /// The current matrix, to change.
     pub fn top_mut(&mut self) -> &mut Mat4 {
         self.entries
             .last_mut()
             .expect("a matrix stack is never empty")
     }
 
+    /// How many matrices the stack holds (GL_*_STACK_DEPTH), at least 1.
     pub fn depth(&self) -> usize {
         self.entries.len()
     }
 
+    /// The most it can hold (GL_MAX_*_STACK_DEPTH).
     pub fn max_depth(&self) -> usize {
         self.max_depth
     }
 
+    /// glPushMatrix: a copy of the top on top; GL_STACK_OVERFLOW when full.
     pub fn push(&mut self) -> GlResult {
         if self.entries.len() >= self.max_depth {
             return Err(GlError::StackOverflow);
@@ -52,6 +61,7 @@ impl MatrixStack {
         Ok(())
     }
 
+    /// glPopMatrix; GL_STACK_UNDERFLOW with one matrix left.
     pub fn pop(&mut self) -> GlResult {
         if self.entries.len() <= 1 {
             return Err(GlError::StackUnderflow);
@@ -64,9 +74,13 @@ impl MatrixStack {
 /// The stacks and glMatrixMode: a texture matrix stack for each texture unit (§2.11.2).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Matrices {
+    /// GL_MATRIX_MODE.
     pub mode: GLenum,
+    /// The modelview stack.
     pub modelview: MatrixStack,
+    /// The projection stack.
     pub projection: MatrixStack,
+    /// Each texture unit's texture matrix stack.
     pub texture: [MatrixStack; MAX_TEXTURE_UNITS],
     /// The imaging subset's color matrix (§3.6.3): kept and queried.
     pub color: MatrixStack,
@@ -105,6 +119,7 @@ impl Matrices {
         }
     }
 
+    /// glMatrixMode: GL_INVALID_ENUM for anything but the four stacks.
     pub fn set_mode(&mut self, mode: GLenum) -> GlResult {
         if !matches!(mode, GL_MODELVIEW | GL_PROJECTION | GL_TEXTURE | GL_COLOR) {
             return Err(GlError::InvalidEnum);

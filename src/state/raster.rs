@@ -8,6 +8,7 @@ use crate::gl::*;
 use crate::lighting::lanes::LANES;
 use crate::pipeline::block::Lanes4;
 
+/// The transformation, clipping and polygon state primitive assembly reads.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RasterState {
     /// x, y, width, height.
@@ -16,8 +17,11 @@ pub struct RasterState {
     pub depth_range: [f64; 2],
     /// Eye-space plane equations (§2.12), transformed when specified.
     pub clip_planes: [DVec4; MAX_CLIP_PLANES],
+    /// GL_SHADE_MODEL.
     pub shade_model: GLenum,
+    /// GL_FRONT_FACE.
     pub front_face: GLenum,
+    /// GL_CULL_FACE_MODE.
     pub cull_face_mode: GLenum,
     /// Front and back polygon modes.
     pub polygon_mode: [GLenum; 2],

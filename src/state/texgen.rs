@@ -10,9 +10,11 @@ use crate::lighting::homogenize;
 /// One coordinate's generation state.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CoordGen {
+    /// GL_TEXTURE_GEN_S (or _T, _R, _Q) enabled.
     pub enabled: bool,
     /// GL_TEXTURE_GEN_MODE.
     pub mode: GLenum,
+    /// GL_OBJECT_PLANE.
     pub object_plane: Vec4,
     /// In eye coordinates: the plane given, times the inverse of the modelview matrix
     /// current when it was given.
@@ -22,6 +24,7 @@ pub struct CoordGen {
 /// The generation state of a texture unit, for s, t, r and q.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TexGen {
+    /// s, t, r and q.
     pub coords: [CoordGen; 4],
 }
 
@@ -140,10 +143,15 @@ impl TexGen {
 /// One enabled coordinate's function.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Generation {
+    /// GL_OBJECT_LINEAR with its plane.
     ObjectLinear(DVec4),
+    /// GL_EYE_LINEAR with its plane in eye coordinates.
     EyeLinear(DVec4),
+    /// GL_SPHERE_MAP.
     SphereMap,
+    /// GL_REFLECTION_MAP.
     ReflectionMap,
+    /// GL_NORMAL_MAP.
     NormalMap,
 }
 
@@ -151,6 +159,7 @@ pub enum Generation {
 /// texture coordinates).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PreparedTexGen {
+    /// s, t, r and q.
     pub coords: [Option<Generation>; 4],
 }
 
@@ -158,8 +167,11 @@ pub struct PreparedTexGen {
 /// normal (after rescaling and normalization, §2.11.3).
 #[derive(Clone, Copy, Debug)]
 pub struct GenInput {
+    /// Object coordinates.
     pub object: DVec4,
+    /// Eye coordinates.
     pub eye: DVec4,
+    /// The eye-space normal.
     pub normal: DVec3,
 }
 
