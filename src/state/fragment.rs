@@ -16,6 +16,7 @@ pub const STENCIL_BITS: u32 = 8;
 /// The scissor attribute group (GL_SCISSOR_BIT, §4.1.2).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct ScissorAttribs {
+    /// GL_SCISSOR_TEST.
     pub test: bool,
     /// x, y, width, height. GL starts it at the window's size; with no window, (0, 0, 0, 0),
     /// as the viewport.
@@ -25,10 +26,13 @@ pub struct ScissorAttribs {
 /// The depth-buffer attribute group (GL_DEPTH_BUFFER_BIT, §4.1.6, §4.2.2, §4.2.3).
 #[derive(Clone, Debug, PartialEq)]
 pub struct DepthBufferAttribs {
+    /// GL_DEPTH_TEST.
     pub test: bool,
+    /// GL_DEPTH_FUNC.
     pub func: GLenum,
     /// Clamped to [0, 1].
     pub clear_value: f64,
+    /// GL_DEPTH_WRITEMASK.
     pub write_mask: bool,
 }
 
@@ -46,15 +50,23 @@ impl Default for DepthBufferAttribs {
 /// The stencil-buffer attribute group (GL_STENCIL_BUFFER_BIT, §4.1.5, §4.2.2, §4.2.3).
 #[derive(Clone, Debug, PartialEq)]
 pub struct StencilBufferAttribs {
+    /// GL_STENCIL_TEST.
     pub test: bool,
+    /// GL_STENCIL_FUNC.
     pub func: GLenum,
+    /// GL_STENCIL_VALUE_MASK.
     pub value_mask: GLuint,
     /// Clamped to [0, 2^STENCIL_BITS - 1].
     pub reference: GLint,
+    /// GL_STENCIL_FAIL.
     pub fail: GLenum,
+    /// GL_STENCIL_PASS_DEPTH_FAIL.
     pub pass_depth_fail: GLenum,
+    /// GL_STENCIL_PASS_DEPTH_PASS.
     pub pass_depth_pass: GLenum,
+    /// GL_STENCIL_CLEAR_VALUE.
     pub clear_value: GLint,
+    /// GL_STENCIL_WRITEMASK.
     pub write_mask: GLuint,
 }
 
@@ -79,28 +91,43 @@ impl Default for StencilBufferAttribs {
 /// logic op, draw buffer, write masks and clear values; §4.1.4, §4.1.8-4.1.10, §4.2).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ColorBufferAttribs {
+    /// GL_ALPHA_TEST.
     pub alpha_test: bool,
+    /// GL_ALPHA_TEST_FUNC.
     pub alpha_func: GLenum,
     /// Clamped to [0, 1].
     pub alpha_ref: f32,
+    /// GL_BLEND.
     pub blend: bool,
+    /// GL_BLEND_SRC_RGB.
     pub blend_src_rgb: GLenum,
+    /// GL_BLEND_SRC_ALPHA.
     pub blend_src_alpha: GLenum,
+    /// GL_BLEND_DST_RGB.
     pub blend_dst_rgb: GLenum,
+    /// GL_BLEND_DST_ALPHA.
     pub blend_dst_alpha: GLenum,
+    /// GL_BLEND_EQUATION.
     pub blend_equation: GLenum,
     /// Clamped to [0, 1].
     pub blend_color: Vec4,
+    /// GL_DITHER.
     pub dither: bool,
+    /// GL_INDEX_LOGIC_OP.
     pub index_logic_op: bool,
+    /// GL_COLOR_LOGIC_OP.
     pub color_logic_op: bool,
+    /// GL_LOGIC_OP_MODE.
     pub logic_op_mode: GLenum,
+    /// GL_DRAW_BUFFER.
     pub draw_buffer: GLenum,
+    /// GL_INDEX_WRITEMASK.
     pub index_write_mask: GLuint,
     /// Red, green, blue, alpha.
     pub color_write_mask: [bool; 4],
     /// Clamped to [0, 1].
     pub clear_color: Vec4,
+    /// GL_INDEX_CLEAR_VALUE.
     pub clear_index: f32,
 }
 

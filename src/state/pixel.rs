@@ -11,13 +11,21 @@ pub const MAX_PIXEL_MAP_TABLE: usize = 256;
 /// One direction's storage modes (table 3.1 for unpacking, 4.5 for packing).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PixelStoreModes {
+    /// GL_*_SWAP_BYTES.
     pub swap_bytes: bool,
+    /// GL_*_LSB_FIRST.
     pub lsb_first: bool,
+    /// GL_*_ROW_LENGTH.
     pub row_length: GLint,
+    /// GL_*_IMAGE_HEIGHT.
     pub image_height: GLint,
+    /// GL_*_SKIP_ROWS.
     pub skip_rows: GLint,
+    /// GL_*_SKIP_PIXELS.
     pub skip_pixels: GLint,
+    /// GL_*_SKIP_IMAGES.
     pub skip_images: GLint,
+    /// GL_*_ALIGNMENT.
     pub alignment: GLint,
 }
 
@@ -39,7 +47,9 @@ impl Default for PixelStoreModes {
 /// A glPixelStore parameter as given: glPixelStorei's integer or glPixelStoref's float.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum StoreParam {
+    /// glPixelStorei's.
     Int(GLint),
+    /// glPixelStoref's.
     Float(GLfloat),
 }
 
@@ -64,7 +74,9 @@ impl StoreParam {
 /// The storage modes: client state (GL_CLIENT_PIXEL_STORE_BIT).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct PixelStoreAttribs {
+    /// The GL_PACK_* modes (glReadPixels, glGetTexImage, ...).
     pub pack: PixelStoreModes,
+    /// The GL_UNPACK_* modes (glTexImage, glDrawPixels, ...).
     pub unpack: PixelStoreModes,
 }
 
@@ -242,19 +254,26 @@ pub fn pack_stipple(pack: &PixelStoreModes, rows: &[u32; 32], bytes: &mut [u8]) 
 /// the read buffer (§4.3.2).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PixelModeAttribs {
+    /// GL_MAP_COLOR.
     pub map_color: bool,
+    /// GL_MAP_STENCIL.
     pub map_stencil: bool,
+    /// GL_INDEX_SHIFT.
     pub index_shift: GLint,
+    /// GL_INDEX_OFFSET.
     pub index_offset: GLint,
     /// Red, green, blue, alpha, depth.
     pub scale: [f32; 5],
+    /// Red, green, blue, alpha, depth.
     pub bias: [f32; 5],
     /// x, y.
     pub zoom: [f32; 2],
+    /// GL_READ_BUFFER.
     pub read_buffer: GLenum,
     /// The imaging subset's post-convolution and post-color-matrix scales (red to alpha)
     /// then biases: kept and queried (no pixel rectangle goes through them).
     pub post_convolution: [f32; 8],
+    /// The same for the color matrix.
     pub post_color_matrix: [f32; 8],
 }
 
@@ -356,8 +375,11 @@ impl PixelModeAttribs {
 /// A pixel transfer mode's value, in its own type.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TransferValue {
+    /// A boolean mode.
     Bool(bool),
+    /// An integer mode.
     Int(GLint),
+    /// A float mode.
     Float(f32),
 }
 
@@ -365,6 +387,7 @@ pub enum TransferValue {
 /// GL_PIXEL_MAP_A_TO_A); their sizes are GL_PIXEL_MAP_x_SIZE, in the same order.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PixelMaps {
+    /// Each map's entries.
     pub maps: [Vec<f32>; 10],
 }
 

@@ -12,10 +12,15 @@ pub const MAX_POINT_SIZE: f32 = 1024.0;
 /// The point attribute group (GL_POINT_BIT, §3.3).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PointAttribs {
+    /// GL_POINT_SMOOTH.
     pub smooth: bool,
+    /// GL_POINT_SIZE.
     pub size: f32,
+    /// GL_POINT_SIZE_MIN.
     pub size_min: f32,
+    /// GL_POINT_SIZE_MAX.
     pub size_max: f32,
+    /// GL_POINT_FADE_THRESHOLD_SIZE.
     pub fade_threshold_size: f32,
     /// The constant, linear and quadratic coefficients.
     pub distance_attenuation: [f32; 3],
@@ -77,9 +82,13 @@ pub fn positive_size(size: f32) -> GlResult<f32> {
 /// The line attribute group (GL_LINE_BIT, §3.4).
 #[derive(Clone, Debug, PartialEq)]
 pub struct LineAttribs {
+    /// GL_LINE_SMOOTH.
     pub smooth: bool,
+    /// GL_LINE_STIPPLE.
     pub stipple: bool,
+    /// GL_LINE_WIDTH.
     pub width: f32,
+    /// GL_LINE_STIPPLE_PATTERN.
     pub stipple_pattern: GLushort,
     /// Clamped to [1, 256].
     pub stipple_repeat: GLint,
@@ -101,12 +110,19 @@ impl Default for LineAttribs {
 /// §3.5): antialiasing, stipple and offset enables, the offset.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct PolygonAttribs {
+    /// GL_POLYGON_SMOOTH.
     pub smooth: bool,
+    /// GL_POLYGON_STIPPLE.
     pub stipple: bool,
+    /// GL_POLYGON_OFFSET_POINT.
     pub offset_point: bool,
+    /// GL_POLYGON_OFFSET_LINE.
     pub offset_line: bool,
+    /// GL_POLYGON_OFFSET_FILL.
     pub offset_fill: bool,
+    /// GL_POLYGON_OFFSET_FACTOR.
     pub offset_factor: f32,
+    /// GL_POLYGON_OFFSET_UNITS.
     pub offset_units: f32,
 }
 
@@ -114,12 +130,17 @@ pub struct PolygonAttribs {
 /// has no sample buffers (GL_SAMPLE_BUFFERS 0), so none of it has an effect there either.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MultisampleAttribs {
+    /// GL_MULTISAMPLE.
     pub multisample: bool,
+    /// GL_SAMPLE_ALPHA_TO_COVERAGE.
     pub sample_alpha_to_coverage: bool,
+    /// GL_SAMPLE_ALPHA_TO_ONE.
     pub sample_alpha_to_one: bool,
+    /// GL_SAMPLE_COVERAGE.
     pub sample_coverage: bool,
     /// Clamped to [0, 1].
     pub coverage_value: f32,
+    /// GL_SAMPLE_COVERAGE_INVERT.
     pub coverage_invert: bool,
 }
 
@@ -140,6 +161,7 @@ impl Default for MultisampleAttribs {
 /// the first (leftmost) pixel of a row in the most significant bit.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PolygonStippleAttribs {
+    /// The rows, in the order glPolygonStipple unpacks them.
     pub rows: [u32; 32],
 }
 
