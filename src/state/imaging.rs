@@ -25,10 +25,15 @@ pub const CONVOLUTIONS: [GLenum; 3] = [GL_CONVOLUTION_1D, GL_CONVOLUTION_2D, GL_
 /// format): each entry as the internal format keeps it (`TexImage::store`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Entries {
+    /// The internal format, as given.
     pub internal_format: GLenum,
+    /// Its base internal format.
     pub base: Base,
+    /// The component resolutions the internal format keeps.
     pub sizes: ComponentSizes,
+    /// Width (and height, for two-dimensional filters).
     pub size: [usize; 2],
+    /// The entries, row by row.
     pub values: Vec<[f32; 4]>,
 }
 
@@ -96,6 +101,7 @@ pub fn internal_format_of(format: GLint, histogram: bool) -> GlResult<(Base, Com
 /// One color table: its entries and its scale and bias (GL_COLOR_TABLE_SCALE, _BIAS).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ColorTable {
+    /// The table's entries.
     pub entries: Entries,
 }
 
@@ -110,7 +116,9 @@ impl Default for ColorTable {
 /// A convolution filter: its entries (a separable filter's row, then its column).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Filter {
+    /// The filter's entries (a separable filter's row).
     pub entries: Entries,
+    /// A separable filter's column (empty otherwise).
     pub column: Vec<[f32; 4]>,
 }
 
@@ -132,13 +140,21 @@ pub struct ImagingModes {
     pub tables_enabled: [bool; 3],
     /// GL_CONVOLUTION_1D, GL_CONVOLUTION_2D, GL_SEPARABLE_2D.
     pub convolutions_enabled: [bool; 3],
+    /// GL_HISTOGRAM.
     pub histogram_enabled: bool,
+    /// GL_MINMAX.
     pub minmax_enabled: bool,
+    /// GL_COLOR_TABLE_SCALE of each table, in `tables_enabled` order.
     pub table_scale: [[f32; 4]; 3],
+    /// GL_COLOR_TABLE_BIAS of each table.
     pub table_bias: [[f32; 4]; 3],
+    /// GL_CONVOLUTION_BORDER_MODE of each filter, in `convolutions_enabled` order.
     pub border_mode: [GLenum; 3],
+    /// GL_CONVOLUTION_BORDER_COLOR of each filter.
     pub border_color: [[f32; 4]; 3],
+    /// GL_CONVOLUTION_FILTER_SCALE of each filter.
     pub filter_scale: [[f32; 4]; 3],
+    /// GL_CONVOLUTION_FILTER_BIAS of each filter.
     pub filter_bias: [[f32; 4]; 3],
 }
 
@@ -162,7 +178,9 @@ impl Default for ImagingModes {
 /// The histogram (§3.6.5): its format, width, sink flag and counts.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Histogram {
+    /// Its format, width and counts.
     pub entries: Entries,
+    /// GL_HISTOGRAM_SINK.
     pub sink: bool,
 }
 
@@ -178,10 +196,15 @@ impl Default for Histogram {
 /// Minmax (§3.6.5): its format, sink flag and the minimum and maximum.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Minmax {
+    /// GL_MINMAX_FORMAT.
     pub internal_format: GLenum,
+    /// Its base internal format.
     pub base: Base,
+    /// GL_MINMAX_SINK.
     pub sink: bool,
+    /// The minimum of each component.
     pub min: [f32; 4],
+    /// The maximum of each component.
     pub max: [f32; 4],
 }
 
@@ -200,11 +223,17 @@ impl Default for Minmax {
 /// The imaging subset's images and results (in no attribute group).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Imaging {
+    /// GL_COLOR_TABLE, GL_POST_CONVOLUTION_COLOR_TABLE, GL_POST_COLOR_MATRIX_COLOR_TABLE.
     pub tables: [ColorTable; 3],
+    /// The proxies of the three tables.
     pub proxy_tables: [ColorTable; 3],
+    /// GL_CONVOLUTION_1D, GL_CONVOLUTION_2D, GL_SEPARABLE_2D.
     pub filters: [Filter; 3],
+    /// GL_HISTOGRAM.
     pub histogram: Histogram,
+    /// GL_PROXY_HISTOGRAM.
     pub proxy_histogram: Histogram,
+    /// GL_MINMAX.
     pub minmax: Minmax,
 }
 

@@ -17,13 +17,18 @@ pub const MAX_TEXTURE_LOD_BIAS: f32 = 16.0;
 /// The four texture targets of GL 1.5, in the order of `TextureUnit::bindings`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Target {
+    /// GL_TEXTURE_1D.
     Texture1D,
+    /// GL_TEXTURE_2D.
     Texture2D,
+    /// GL_TEXTURE_3D.
     Texture3D,
+    /// GL_TEXTURE_CUBE_MAP.
     CubeMap,
 }
 
 impl Target {
+    /// The four targets, in order.
     pub const ALL: [Target; 4] = [
         Target::Texture1D,
         Target::Texture2D,
@@ -36,6 +41,7 @@ impl Target {
         Target::ALL.into_iter().find(|t| t.enumeration() == target)
     }
 
+    /// The target's enum (GL_TEXTURE_1D ...).
     pub fn enumeration(self) -> GLenum {
         match self {
             Target::Texture1D => GL_TEXTURE_1D,
@@ -94,7 +100,9 @@ impl Target {
 /// the bound objects.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TextureParams {
+    /// GL_TEXTURE_MIN_FILTER.
     pub min_filter: GLenum,
+    /// GL_TEXTURE_MAG_FILTER.
     pub mag_filter: GLenum,
     /// S, T, R.
     pub wrap: [GLenum; 3],
@@ -102,13 +110,21 @@ pub struct TextureParams {
     pub border_color: [f32; 4],
     /// Clamped to [0, 1] when set.
     pub priority: f32,
+    /// GL_TEXTURE_MIN_LOD.
     pub min_lod: f32,
+    /// GL_TEXTURE_MAX_LOD.
     pub max_lod: f32,
+    /// GL_TEXTURE_BASE_LEVEL.
     pub base_level: GLint,
+    /// GL_TEXTURE_MAX_LEVEL.
     pub max_level: GLint,
+    /// GL_GENERATE_MIPMAP.
     pub generate_mipmap: bool,
+    /// GL_DEPTH_TEXTURE_MODE.
     pub depth_texture_mode: GLenum,
+    /// GL_TEXTURE_COMPARE_MODE.
     pub compare_mode: GLenum,
+    /// GL_TEXTURE_COMPARE_FUNC.
     pub compare_func: GLenum,
 }
 
@@ -254,13 +270,21 @@ impl TextureParams {
 /// ARB_texture_env_combine with GL 1.4's crossbar sources (GL_TEXTUREn).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Combine {
+    /// GL_COMBINE_RGB.
     pub combine_rgb: GLenum,
+    /// GL_COMBINE_ALPHA.
     pub combine_alpha: GLenum,
+    /// GL_SOURCE0_RGB to GL_SOURCE2_RGB.
     pub source_rgb: [GLenum; 3],
+    /// GL_SOURCE0_ALPHA to GL_SOURCE2_ALPHA.
     pub source_alpha: [GLenum; 3],
+    /// GL_OPERAND0_RGB to GL_OPERAND2_RGB.
     pub operand_rgb: [GLenum; 3],
+    /// GL_OPERAND0_ALPHA to GL_OPERAND2_ALPHA.
     pub operand_alpha: [GLenum; 3],
+    /// GL_RGB_SCALE.
     pub rgb_scale: f32,
+    /// GL_ALPHA_SCALE.
     pub alpha_scale: f32,
 }
 
@@ -282,10 +306,13 @@ impl Default for Combine {
 /// One texture unit's environment (table 6.19) and its LOD bias (GL_TEXTURE_FILTER_CONTROL).
 #[derive(Clone, Debug, PartialEq)]
 pub struct TexEnv {
+    /// GL_TEXTURE_ENV_MODE.
     pub mode: GLenum,
     /// Clamped to [0, 1] when set.
     pub color: [f32; 4],
+    /// The combiner state (GL_COMBINE mode).
     pub combine: Combine,
+    /// GL_TEXTURE_LOD_BIAS.
     pub lod_bias: f32,
 }
 
@@ -472,20 +499,25 @@ pub struct TextureUnit {
     pub enabled: [bool; 4],
     /// The names bound, in `Target` order; 0 is the target's default object.
     pub bindings: [GLuint; 4],
+    /// The texture environment.
     pub env: TexEnv,
+    /// The texture coordinate generation state.
     pub tex_gen: crate::state::texgen::TexGen,
 }
 
 /// One texture object: its target (fixed by the first bind), parameters and images.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TextureObject {
+    /// The target, fixed by the first bind.
     pub target: Target,
+    /// glTexParameter's state.
     pub params: TextureParams,
     /// Images by (cube map face, or 0; level); a level absent here has width 0.
     pub images: BTreeMap<(usize, usize), TexImage>,
 }
 
 impl TextureObject {
+    /// An object of `target` with the initial parameters and no image.
     pub fn new(target: Target) -> TextureObject {
         TextureObject {
             target,
@@ -501,6 +533,7 @@ impl TextureObject {
 pub struct Textures {
     /// GL_ACTIVE_TEXTURE - GL_TEXTURE0.
     pub active_unit: usize,
+    /// The texture units.
     pub units: [TextureUnit; MAX_TEXTURE_UNITS],
     /// The default objects, in `Target` order.
     pub defaults: [TextureObject; 4],
@@ -530,6 +563,7 @@ impl Textures {
         &self.units[self.active_unit]
     }
 
+    /// The active unit, to change.
     pub fn unit_mut(&mut self) -> &mut TextureUnit {
         &mut self.units[self.active_unit]
     }
@@ -600,6 +634,7 @@ impl Textures {
             .unwrap_or(&self.defaults[target as usize])
     }
 
+    /// The object bound to `target` on the active unit, to change.
     pub fn bound_mut(&mut self, target: Target) -> &mut TextureObject {
         let name = self.units[self.active_unit].bindings[target as usize];
         match self.objects.get_mut(&name) {
@@ -672,6 +707,7 @@ impl Textures {
             .map(|unit| (unit.enabled, unit.tex_gen.coords.map(|c| c.enabled)))
     }
 
+    /// Restores every unit's enables as `enables` gave them.
     pub fn restore_enables(&mut self, enables: [UnitEnables; MAX_TEXTURE_UNITS]) {
         for (unit, (targets, generation)) in self.units.iter_mut().zip(enables) {
             unit.enabled = targets;

@@ -13,12 +13,19 @@ use crate::state::pixel::{PixelMaps, PixelModeAttribs, PixelStoreModes};
 /// The base internal formats (table 3.15), and depth (§3.8.1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Base {
+    /// GL_ALPHA.
     Alpha,
+    /// GL_LUMINANCE.
     Luminance,
+    /// GL_LUMINANCE_ALPHA.
     LuminanceAlpha,
+    /// GL_INTENSITY.
     Intensity,
+    /// GL_RGB.
     Rgb,
+    /// GL_RGBA.
     Rgba,
+    /// GL_DEPTH_COMPONENT.
     Depth,
 }
 
@@ -94,12 +101,19 @@ pub fn internal_format(internal_format: GLint) -> Option<(Base, ComponentSizes)>
 /// format as given, and its texels (none for a proxy), row by row, image by image.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TexImage {
+    /// GL_TEXTURE_WIDTH, the border included.
     pub width: i32,
+    /// GL_TEXTURE_HEIGHT, the border included.
     pub height: i32,
+    /// GL_TEXTURE_DEPTH, the border included.
     pub depth: i32,
+    /// GL_TEXTURE_BORDER.
     pub border: i32,
+    /// GL_TEXTURE_INTERNAL_FORMAT, as given.
     pub internal_format: GLint,
+    /// Its base internal format.
     pub base: Base,
+    /// The component resolutions it keeps (GL_TEXTURE_RED_SIZE ...).
     pub sizes: ComponentSizes,
     /// Shared: a glPushAttrib copy of a texture object must not copy its images.
     pub texels: Arc<Vec<[f32; 4]>>,
@@ -111,6 +125,7 @@ impl TexImage {
         self.width as usize * self.height as usize * self.depth as usize
     }
 
+    /// Whether the image has no texel.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
@@ -196,11 +211,15 @@ pub fn format_components(format: GLenum) -> Option<&'static [usize]> {
 /// its fields in component order, and whether the first component is in the low bits.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PixelType {
+    /// The type's enum.
     pub ty: GLenum,
+    /// Bytes per element (per component, or per pixel for the packed types).
     pub size: usize,
+    /// The packed types' field widths and whether they are reversed (_REV).
     pub packed: Option<(&'static [u32], bool)>,
 }
 
+/// The client type `ty`, or None for an unknown one.
 pub fn pixel_type(ty: GLenum) -> Option<PixelType> {
     let (size, packed): (usize, Option<(&'static [u32], bool)>) = match ty {
         GL_UNSIGNED_BYTE | GL_BYTE => (1, None),
@@ -229,14 +248,18 @@ pub fn pixel_type(ty: GLenum) -> Option<PixelType> {
 /// differs from the format's (table 3.8).
 #[derive(Clone, Copy, Debug)]
 pub struct PixelFormat {
+    /// The format's components in memory order, by RGBA index.
     pub components: &'static [usize],
+    /// The client type.
     pub ty: PixelType,
+    /// GL_DEPTH_COMPONENT.
     pub depth: bool,
     /// GL_LUMINANCE or GL_LUMINANCE_ALPHA: unpacking copies L to R, G and B.
     pub luminance: bool,
 }
 
 impl PixelFormat {
+    /// Checks `format` and `ty` as described above.
     pub fn new(format: GLenum, ty: GLenum) -> GlResult<PixelFormat> {
         let components = format_components(format).ok_or(GlError::InvalidEnum)?;
         let ty = pixel_type(ty).ok_or(GlError::InvalidEnum)?;
@@ -268,10 +291,15 @@ impl PixelFormat {
 /// store modes (§3.6.4, §3.8.1 for images of 3D textures, §4.3.2 for packing).
 #[derive(Clone, Copy, Debug)]
 pub struct Layout {
+    /// The offset of the first pixel (the skip modes applied).
     pub start: usize,
+    /// Bytes per pixel.
     pub pixel_bytes: usize,
+    /// Bytes from one row to the next (row length and alignment applied).
     pub row_stride: usize,
+    /// Bytes from one image to the next (image height applied).
     pub image_stride: usize,
+    /// Width, height, depth in pixels.
     pub size: [usize; 3],
 }
 
