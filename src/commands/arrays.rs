@@ -60,6 +60,17 @@ pub enum ElementIndices<'a> {
 
 impl ElementIndices<'_> {
     /// How many vertices the draw has.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ElementIndices, gl::*};
+    /// let indices = [0u16, 1, 2];
+    /// let bytes: Vec<u8> = indices.iter().flat_map(|i| i.to_ne_bytes()).collect();
+    /// let listed = ElementIndices::Listed { index_type: GL_UNSIGNED_SHORT, bytes: &bytes };
+    /// assert_eq!(listed.len(), 3);
+    /// assert_eq!(ElementIndices::Sequential { first: 4, count: 2 }.range(), Some((4, 5)));
+    /// ```
     pub fn len(&self) -> usize {
         match *self {
             ElementIndices::Sequential { count, .. } => count,
@@ -276,6 +287,18 @@ impl Context {
     /// glVertexPointer. `address` is the application's pointer (0 for NULL): only the C
     /// layer reads through it. Like Mesa, the pointer commands are accepted between glBegin
     /// and glEnd (GL 1.5 §2.6.3 leaves the error optional).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// let positions = [0.0f32; 12];
+    /// ctx.vertex_pointer(3, GL_FLOAT, 0, positions.as_ptr() as usize)?;
+    /// assert_eq!(ctx.get_pointer(GL_VERTEX_ARRAY_POINTER)?, positions.as_ptr() as usize);
+    /// assert_eq!(ctx.vertex_pointer(1, GL_FLOAT, 0, 0), Err(GlError::InvalidValue)); // size 1
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn vertex_pointer(
         &mut self,
         size: i32,
@@ -369,11 +392,34 @@ impl Context {
 
     /// glEnableClientState / glDisableClientState. GL_INDEX_ARRAY is accepted and only
     /// stored (fflight has no color index mode).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.client_state(GL_NORMAL_ARRAY, true)?;
+    /// assert_eq!(ctx.get(GL_NORMAL_ARRAY)?.as_bools(), [true]);
+    /// assert_eq!(ctx.client_state(GL_LIGHTING, true), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn client_state(&mut self, array: GLenum, enabled: bool) -> GlResult {
         self.arrays.set_enabled(array, enabled)
     }
 
     /// glInterleavedArrays (table 2.5).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.interleaved_arrays(GL_N3F_V3F, 0, 0x1000)?;
+    /// assert_eq!(ctx.get(GL_NORMAL_ARRAY)?.as_bools(), [true]);
+    /// assert_eq!(ctx.get(GL_VERTEX_ARRAY_STRIDE)?.as_ints(), [24]); // the normal and the vertex
+    /// assert_eq!(ctx.get_pointer(GL_VERTEX_ARRAY_POINTER)?, 0x1000 + 12);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn interleaved_arrays(&mut self, format: GLenum, stride: i32, address: usize) -> GlResult {
         self.arrays.set_interleaved(format, stride, address)
     }
@@ -391,12 +437,33 @@ impl Context {
 
     /// glArrayElement's checks: a negative index is GL_INVALID_VALUE (GL leaves it
     /// undefined; it would read before the arrays). Legal between glBegin and glEnd.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{Context, GlError};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.check_array_element(5)?, 5);
+    /// assert_eq!(ctx.check_array_element(-1), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn check_array_element(&self, index: i32) -> GlResult<usize> {
         usize::try_from(index).map_err(|_| GlError::InvalidValue)
     }
 
     /// glDrawArrays' checks, in Mesa's order: glBegin/glEnd, count, mode. A negative
     /// `first` is GL_INVALID_VALUE (GL leaves it undefined, Mesa reads before the arrays).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ElementIndices, gl::*, Context, GlError};
+    /// let ctx = Context::new();
+    /// let elements = ctx.check_draw_arrays(GL_TRIANGLES, 2, 3)?;
+    /// assert_eq!(elements, ElementIndices::Sequential { first: 2, count: 3 });
+    /// assert_eq!(ctx.check_draw_arrays(GL_TRIANGLES, 0, -1), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn check_draw_arrays(
         &self,
         mode: GLenum,
@@ -431,6 +498,19 @@ impl Context {
 
     /// glDrawElements' checks, in Mesa's order: glBegin/glEnd, count, mode, type. Returns
     /// how many bytes of indices the draw reads.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// // With the vertex array disabled nothing is drawn, so no index is read.
+    /// assert_eq!(ctx.check_draw_elements(GL_LINES, 4, GL_UNSIGNED_SHORT)?, 0);
+    /// ctx.client_state(GL_VERTEX_ARRAY, true)?;
+    /// assert_eq!(ctx.check_draw_elements(GL_LINES, 4, GL_UNSIGNED_SHORT)?, 8); // bytes of indices
+    /// assert_eq!(ctx.check_draw_elements(GL_LINES, 4, GL_FLOAT), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn check_draw_elements(
         &self,
         mode: GLenum,

@@ -260,11 +260,34 @@ fn decode_offset(list_type: GLenum, b: &[u8]) -> u32 {
 
 impl Context {
     /// The display lists.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(4, GL_COMPILE)?;
+    /// assert_eq!((ctx.display_lists().index(), ctx.display_lists().mode()), (4, GL_COMPILE));
+    /// ctx.end_list()?;
+    /// assert_eq!(ctx.display_lists().get(4), Some(&[][..]));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn display_lists(&self) -> &DisplayLists {
         &self.lists
     }
 
     /// Whether a list is being compiled.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// assert!(!ctx.compiling_list());
+    /// ctx.new_list(1, GL_COMPILE)?;
+    /// assert!(ctx.compiling_list());
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn compiling_list(&self) -> bool {
         self.lists.compiling.is_some()
     }
@@ -272,6 +295,19 @@ impl Context {
     /// While a list is being compiled, appends the command `make` builds to it. Returns true
     /// when the command must not also run now (GL_COMPILE); false when it runs (not
     /// compiling, or GL_COMPILE_AND_EXECUTE). Every compiled entry point calls this first.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::Command, gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(1, GL_COMPILE)?;
+    /// assert!(ctx.record(|| Command::EdgeFlag(false))); // recorded, not to be run
+    /// ctx.end_list()?;
+    /// assert!(!ctx.record(|| Command::EdgeFlag(false))); // not compiling: run it
+    /// assert_eq!(ctx.display_lists().get(1).map(<[_]>::len), Some(1));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn record(&mut self, make: impl FnOnce() -> Command) -> bool {
         match &mut self.lists.compiling {
             None => false,
@@ -293,6 +329,16 @@ impl Context {
     }
 
     /// Records `command` while compiling, and runs it unless the mode is GL_COMPILE.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::Command, gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.record_or_run(Command::Normal(glam::Vec3::X))?; // not compiling: runs
+    /// assert_eq!(ctx.get(GL_CURRENT_NORMAL)?.as_floats(), [1.0, 0.0, 0.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn record_or_run(&mut self, command: Command) -> GlResult {
         if self.record(|| command.clone()) {
             return Ok(());
@@ -301,6 +347,23 @@ impl Context {
     }
 
     /// glNewList, in Mesa's order of checks.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{capi::TableCommand, gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// let list = ctx.gen_lists(1)?;
+    /// ctx.new_list(list, GL_COMPILE)?;
+    /// assert!(ctx.compiling_list());
+    /// // The C entry points record themselves; from Rust, record the command.
+    /// ctx.record_or_run(TableCommand::glEnable { cap: GL_LIGHTING }.into())?;
+    /// ctx.end_list()?;
+    /// assert!(!ctx.is_enabled(GL_LIGHTING)?); // compiled, not run
+    /// ctx.call_list(list)?;
+    /// assert!(ctx.is_enabled(GL_LIGHTING)?);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn new_list(&mut self, name: u32, mode: GLenum) -> GlResult {
         self.outside_begin_end()?;
         if name == 0 {
@@ -321,6 +384,19 @@ impl Context {
     }
 
     /// glEndList: only now does the list replace the one of its name.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.end_list(), Err(GlError::InvalidOperation)); // no list being compiled
+    /// ctx.new_list(1, GL_COMPILE_AND_EXECUTE)?;
+    /// assert_eq!(ctx.get(GL_LIST_INDEX)?.as_ints(), [1]);
+    /// ctx.end_list()?;
+    /// assert!(ctx.is_list(1)?);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn end_list(&mut self) -> GlResult {
         self.outside_begin_end()?;
         let list = self
@@ -334,6 +410,17 @@ impl Context {
 
     /// glGenLists: `range` contiguous unused names, each made an empty list; 0 when there
     /// is no such block or `range` is 0.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::Context;
+    /// let mut ctx = Context::new();
+    /// let first = ctx.gen_lists(3)?;
+    /// assert!(first > 0 && ctx.is_list(first + 2)?);
+    /// assert_eq!(ctx.gen_lists(0)?, 0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn gen_lists(&mut self, range: i32) -> GlResult<u32> {
         self.outside_begin_end()?;
         let count = u32::try_from(range).map_err(|_| GlError::InvalidValue)?;
@@ -350,6 +437,17 @@ impl Context {
     }
 
     /// glDeleteLists: names without a list are ignored.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::Context;
+    /// let mut ctx = Context::new();
+    /// let first = ctx.gen_lists(2)?;
+    /// ctx.delete_lists(first, 2)?;
+    /// assert!(!ctx.is_list(first)?);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn delete_lists(&mut self, first: u32, range: i32) -> GlResult {
         self.outside_begin_end()?;
         let count = u64::try_from(range).map_err(|_| GlError::InvalidValue)?;
@@ -369,12 +467,31 @@ impl Context {
     }
 
     /// glIsList.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::Context;
+    /// let ctx = Context::new();
+    /// assert!(!ctx.is_list(1)?);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn is_list(&self, name: u32) -> GlResult<bool> {
         self.outside_begin_end()?;
         Ok(self.lists.lists.contains_key(&name))
     }
 
     /// glListBase.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.list_base(100)?;
+    /// assert_eq!(ctx.get(GL_LIST_BASE)?.as_ints(), [100]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn list_base(&mut self, base: u32) -> GlResult {
         self.outside_begin_end()?;
         self.lists.base = base;
@@ -383,6 +500,15 @@ impl Context {
 
     /// glCallList: legal between glBegin and glEnd (§2.6.3); a name without a list does
     /// nothing.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::Context;
+    /// let mut ctx = Context::new();
+    /// ctx.call_list(42)?; // no such list: nothing happens
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn call_list(&mut self, name: u32) -> GlResult {
         if name == 0 {
             return Err(GlError::InvalidValue);
@@ -393,6 +519,18 @@ impl Context {
 
     /// glCallLists' checks and offsets, from the `lists` bytes of its `n` names of
     /// `list_type` (GL_INVALID_ENUM for a bad type, even when `n` is 0, as Mesa).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let ctx = Context::new();
+    /// // Two GL_UNSIGNED_SHORT names, in native byte order.
+    /// let bytes: Vec<u8> = [3u16, 5].iter().flat_map(|n| n.to_ne_bytes()).collect();
+    /// assert_eq!(ctx.call_lists_offsets(2, GL_UNSIGNED_SHORT, &bytes)?, [3, 5]);
+    /// assert_eq!(ctx.call_lists_offsets(0, GL_DOUBLE, &[]), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn call_lists_offsets(
         &self,
         n: i32,
@@ -412,6 +550,20 @@ impl Context {
     }
 
     /// glCallLists.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{capi::TableCommand, gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(11, GL_COMPILE)?;
+    /// ctx.record_or_run(TableCommand::glEnable { cap: GL_NORMALIZE }.into())?;
+    /// ctx.end_list()?;
+    /// ctx.list_base(10)?;
+    /// ctx.call_lists(1, GL_UNSIGNED_BYTE, &[1])?; // list 10 + 1
+    /// assert!(ctx.is_enabled(GL_NORMALIZE)?);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn call_lists(&mut self, n: i32, list_type: GLenum, lists: &[u8]) -> GlResult {
         let offsets = self.call_lists_offsets(n, list_type, lists)?;
         self.call_list_offsets(&offsets);
