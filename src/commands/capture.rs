@@ -27,6 +27,15 @@ pub struct FloatLayout {
 
 impl FloatLayout {
     /// `stride` in bytes, 0 for tightly packed; negative is GL_INVALID_VALUE.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::capture::FloatLayout, GlError};
+    /// assert_eq!(FloatLayout::new(3, 0)?.stride, 12); // 0: tightly packed
+    /// assert_eq!(FloatLayout::new(3, -4).err(), Some(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn new(size: usize, stride: i32) -> GlResult<FloatLayout> {
         let stride = usize::try_from(stride).map_err(|_| GlError::InvalidValue)?;
         Ok(FloatLayout {
@@ -36,6 +45,16 @@ impl FloatLayout {
     }
 
     /// Bytes `count` elements occupy; `None` if that does not fit the address space.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::commands::capture::FloatLayout;
+    /// let layout = FloatLayout::new(3, 16)?; // 3 floats every 16 bytes
+    /// assert_eq!(layout.len(2), Some(16 + 12)); // the last element unpadded
+    /// assert_eq!(layout.len(0), Some(0));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn len(&self, count: usize) -> Option<usize> {
         match count {
             0 => Some(0),
@@ -47,11 +66,28 @@ impl FloatLayout {
     }
 
     /// Byte offset of element `i`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::commands::capture::FloatLayout;
+    /// assert_eq!(FloatLayout::new(4, 0)?.offset(3), 48);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn offset(&self, i: usize) -> usize {
         i * self.stride
     }
 
     /// Element `i` of `bytes`, padded with (0, 0, 0, 1).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::commands::capture::FloatLayout;
+    /// let bytes: Vec<u8> = [1.0f32, 2.0].iter().flat_map(|v| v.to_ne_bytes()).collect();
+    /// assert_eq!(FloatLayout::new(2, 0)?.read(&bytes, 0), [1.0, 2.0, 0.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn read(&self, bytes: &[u8], i: usize) -> [f32; 4] {
         let mut out = [0.0, 0.0, 0.0, 1.0];
         let offset = self.offset(i);
@@ -202,6 +238,32 @@ impl Context {
     /// `emit(first, block)` receives them lit. Blocks are independent, so the results do not
     /// depend on the thread count; `emit` is called from the threads, each block once.
     /// GL_INVALID_OPERATION between glBegin and glEnd.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// use std::sync::Mutex;
+    /// let mut ctx = Context::new();
+    /// let lit = Mutex::new(vec![0.0f32; 20]);
+    /// ctx.light_blocks(
+    ///     20,
+    ///     |first, block| {
+    ///         for lane in 0..block.len {
+    ///             let x = (first + lane) as f32;
+    ///             block.set_position(lane, glam::Vec4::new(x, 0.0, 0.0, 1.0));
+    ///         }
+    ///     },
+    ///     |first, block| {
+    ///         let mut lit = lit.lock().unwrap();
+    ///         for lane in 0..block.len {
+    ///             lit[first + lane] = block.vertex(lane).eye.x;
+    ///         }
+    ///     },
+    /// )?;
+    /// assert_eq!(lit.into_inner().unwrap()[19], 19.0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn light_blocks(
         &mut self,
         count: usize,
@@ -327,6 +389,16 @@ pub struct BulkLayout {
 impl BulkLayout {
     /// GL_INVALID_VALUE for a negative count or stride, a position size other than 2, 3 or
     /// 4, or arrays too large for the address space.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::capture::BulkLayout, GlError};
+    /// let layout = BulkLayout::new(10, 3, [0, 0, 0], [0; 6])?;
+    /// assert_eq!((layout.count, layout.positions.size, layout.positions.stride), (10, 3, 12));
+    /// assert_eq!(BulkLayout::new(10, 5, [0; 3], [0; 6]).err(), Some(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn new(
         count: i32,
         position_size: i32,

@@ -99,6 +99,19 @@ impl Context {
 
     /// Where the values of the feedback buffer set last go (the C layer: the application's
     /// memory).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::FeedbackStorage, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.feedback_buffer(8, GL_2D, 1)?;
+    /// ctx.feedback_storage(FeedbackStorage::default()); // kept by the context (what the Rust API uses)
+    /// ctx.render_mode(GL_FEEDBACK)?;
+    /// ctx.pass_through(1.0)?;
+    /// assert_eq!(ctx.render_mode(GL_RENDER)?.1.unwrap().values.len(), 2);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn feedback_storage(&mut self, storage: FeedbackStorage) {
         self.feedback.storage = storage;
     }

@@ -82,6 +82,18 @@ pub struct RecordedImage {
 
 impl ImageCommand {
     /// Runs the command on `bytes` with the current unpack modes.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::ImageCommand, Context};
+    /// let mut ctx = Context::new();
+    /// ImageCommand::PolygonStipple.run(&mut ctx, &[0u8; 128])?;
+    /// let mut back = [1u8; 128];
+    /// ctx.get_polygon_stipple(&mut back)?;
+    /// assert_eq!(back, [0; 128]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn run(&self, ctx: &mut Context, bytes: &[u8]) -> GlResult {
         match self {
             ImageCommand::TexImage(dimensions, args) => ctx.tex_image(*dimensions, args, bytes),
@@ -96,6 +108,23 @@ impl ImageCommand {
 impl Context {
     /// Runs an image command now, or records it with a copy of `bytes` and the unpack modes
     /// while a list is being compiled.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::ImageCommand, gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(1, GL_COMPILE)?;
+    /// ctx.run_image_command(ImageCommand::PolygonStipple, &[0u8; 128])?; // recorded with its bytes
+    /// ctx.end_list()?;
+    /// let mut stipple = [0u8; 128];
+    /// ctx.get_polygon_stipple(&mut stipple)?;
+    /// assert_eq!(stipple, [0xff; 128]); // not run yet
+    /// ctx.call_list(1)?;
+    /// ctx.get_polygon_stipple(&mut stipple)?;
+    /// assert_eq!(stipple, [0; 128]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn run_image_command(&mut self, command: ImageCommand, bytes: &[u8]) -> GlResult {
         let unpack = self.pixel_store.unpack.clone();
         if self.record(|| {
@@ -119,6 +148,17 @@ impl From<TableCommand> for Command {
 
 impl Command {
     /// Runs the command as its entry point would.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::Command, gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// Command::Color(glam::Vec4::new(0.0, 1.0, 0.0, 1.0)).execute(&mut ctx)?;
+    /// assert_eq!(ctx.get(GL_CURRENT_COLOR)?.as_floats(), [0.0, 1.0, 0.0, 1.0]);
+    /// assert_eq!(Command::Error(GlError::InvalidValue).execute(&mut ctx), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn execute(&self, ctx: &mut Context) -> GlResult {
         match self {
             Command::Table(command) => command.execute(ctx),
@@ -186,16 +226,50 @@ pub struct DisplayLists {
 
 impl DisplayLists {
     /// GL_LIST_INDEX: the list being compiled, 0 for none.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.display_lists().index(), 0);
+    /// ctx.new_list(3, GL_COMPILE)?;
+    /// assert_eq!(ctx.display_lists().index(), 3);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn index(&self) -> u32 {
         self.compiling.as_ref().map_or(0, |c| c.name)
     }
 
     /// GL_LIST_MODE: the mode of the list being compiled, 0 for none.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(3, GL_COMPILE_AND_EXECUTE)?;
+    /// assert_eq!(ctx.display_lists().mode(), GL_COMPILE_AND_EXECUTE);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn mode(&self) -> GLenum {
         self.compiling.as_ref().map_or(0, |c| c.mode)
     }
 
     /// The commands of list `name`, if it exists.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::Command, gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(2, GL_COMPILE)?;
+    /// ctx.record_or_run(Command::EdgeFlag(false))?;
+    /// ctx.end_list()?;
+    /// assert_eq!(ctx.display_lists().get(2), Some(&[Command::EdgeFlag(false)][..]));
+    /// assert_eq!(ctx.display_lists().get(3), None);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get(&self, name: u32) -> Option<&[Command]> {
         self.lists.get(&name).map(|list| &list[..])
     }
@@ -227,6 +301,14 @@ impl DisplayLists {
 }
 
 /// Bytes per name of glCallLists' `type`; `None` for a type it does not take.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{commands::list::call_lists_type_size, gl::*};
+/// assert_eq!(call_lists_type_size(GL_3_BYTES), Some(3));
+/// assert_eq!(call_lists_type_size(GL_DOUBLE), None);
+/// ```
 pub fn call_lists_type_size(list_type: GLenum) -> Option<usize> {
     match list_type {
         GL_BYTE | GL_UNSIGNED_BYTE => Some(1),
@@ -238,6 +320,14 @@ pub fn call_lists_type_size(list_type: GLenum) -> Option<usize> {
 }
 
 /// How many bytes glCallLists reads: 0 where its arguments define none.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{commands::list::call_lists_bytes, gl::*};
+/// assert_eq!(call_lists_bytes(5, GL_SHORT), 10);
+/// assert_eq!(call_lists_bytes(-1, GL_SHORT), 0);
+/// ```
 pub fn call_lists_bytes(n: i32, list_type: GLenum) -> usize {
     call_lists_type_size(list_type).unwrap_or(0) * usize::try_from(n).unwrap_or(0)
 }
@@ -320,6 +410,19 @@ impl Context {
 
     /// `record` for a command built from the application's data, whose checks may fail:
     /// their error is recorded in its place (raised when the list executes).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::Command, gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(1, GL_COMPILE)?;
+    /// // A check that fails at compile time is recorded as its error.
+    /// assert!(ctx.record_checked(|_| Err(GlError::InvalidValue)));
+    /// ctx.end_list()?;
+    /// assert_eq!(ctx.display_lists().get(1), Some(&[Command::Error(GlError::InvalidValue)][..]));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn record_checked(&mut self, make: impl FnOnce(&Context) -> GlResult<Command>) -> bool {
         if !self.compiling_list() {
             return false;

@@ -48,6 +48,19 @@ impl Default for RasterPosition {
 
 impl RasterPosition {
     /// Texture unit `unit`'s texture coordinates.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.multi_tex_coord(GL_TEXTURE1, glam::Vec4::new(0.5, 0.5, 0.0, 1.0))?;
+    /// ctx.raster_pos(glam::Vec4::W)?;
+    /// // The raster position carries each unit's coordinates.
+    /// ctx.active_texture(GL_TEXTURE1)?;
+    /// assert_eq!(ctx.get(GL_CURRENT_RASTER_TEXTURE_COORDS)?.as_floats(), [0.5, 0.5, 0.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn unit_tex_coord(&self, unit: usize) -> Vec4 {
         match unit {
             0 => self.tex_coord,
