@@ -64,6 +64,15 @@ pub enum Capability {
 
 impl Capability {
     /// What `cap` names, or GL_INVALID_ENUM for no capability this module routes (the fragment, fog and texture enables are routed by the context before).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::enables::Capability, GlError};
+    /// assert_eq!(Capability::of(GL_LIGHT2), Ok(Capability::Light(2)));
+    /// assert_eq!(Capability::of(GL_MAP2_VERTEX_4), Ok(Capability::Map(2, 8)));
+    /// assert_eq!(Capability::of(GL_LIGHT0 + 8), Err(GlError::InvalidEnum));
+    /// ```
     pub fn of(cap: GLenum) -> GlResult<Capability> {
         Ok(match cap {
             GL_LIGHTING => Capability::Lighting,
@@ -92,6 +101,14 @@ impl Capability {
 
 impl Enables {
     /// The initial enables: all off.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::enables::Enables;
+    /// let enables = Enables::initial();
+    /// assert!(!enables.lighting && !enables.normalize && enables.clip_planes == [false; 6]);
+    /// ```
     pub fn initial() -> Enables {
         Enables {
             other: Vec::new(),
@@ -100,11 +117,27 @@ impl Enables {
     }
 
     /// Whether `cap` (one of `EVAL_CAPABILITIES`) is enabled.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::enables::Enables};
+    /// assert!(!Enables::initial().other(GL_AUTO_NORMAL));
+    /// ```
     pub fn other(&self, cap: GLenum) -> bool {
         self.other.contains(&cap)
     }
 
     /// Enables or disables `cap` (one of `EVAL_CAPABILITIES`).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::enables::Enables};
+    /// let mut enables = Enables::initial();
+    /// enables.set_other(GL_AUTO_NORMAL, true);
+    /// assert!(enables.other(GL_AUTO_NORMAL));
+    /// ```
     pub fn set_other(&mut self, cap: GLenum, enabled: bool) {
         self.other.retain(|&c| c != cap);
         if enabled {

@@ -23,12 +23,27 @@ pub const VERTEX_3: usize = 7;
 pub const VERTEX_4: usize = 8;
 
 /// Values a control point of map kind `kind` has (table 5.1's k).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::state::eval::{values_per_point, COLOR_4, NORMAL, VERTEX_3};
+/// assert_eq!((values_per_point(COLOR_4), values_per_point(NORMAL), values_per_point(VERTEX_3)), (4, 3, 3));
+/// ```
 pub fn values_per_point(kind: usize) -> usize {
     [4, 1, 3, 1, 2, 3, 4, 3, 4][kind]
 }
 
 /// The kind of a GL_MAP1_* (`dimensions` 1) or GL_MAP2_* (2) target; GL_INVALID_ENUM for
 /// another.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::eval::{map_kind, VERTEX_4}, GlError};
+/// assert_eq!(map_kind(GL_MAP2_VERTEX_4, 2), Ok(VERTEX_4));
+/// assert_eq!(map_kind(GL_MAP2_VERTEX_4, 1), Err(GlError::InvalidEnum)); // a 2D map for glMap1
+/// ```
 pub fn map_kind(target: GLenum, dimensions: usize) -> GlResult<usize> {
     let base = if dimensions == 1 {
         GL_MAP1_COLOR_4
@@ -123,6 +138,14 @@ impl Default for Maps {
 
 /// How many values glMap1 reads: `order` points `stride` apart, k values each (0 when the
 /// arguments are rejected, so nothing is read).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::eval::map1_values};
+/// // 3 points of 3 values, 4 apart: the last point's values end the read.
+/// assert_eq!(map1_values(GL_MAP1_VERTEX_3, 4, 3), 2 * 4 + 3);
+/// ```
 pub fn map1_values(target: GLenum, stride: GLint, order: GLint) -> usize {
     map_values(target, 1, [stride, 1], [order, 1])
 }

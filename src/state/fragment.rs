@@ -166,6 +166,14 @@ pub struct AccumBufferAttribs {
 }
 
 /// The comparison functions of the alpha, stencil and depth tests (§4.1.4-4.1.6).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::fragment::comparison_function, GlError};
+/// assert_eq!(comparison_function(GL_GEQUAL), Ok(GL_GEQUAL));
+/// assert_eq!(comparison_function(GL_ZERO), Err(GlError::InvalidEnum));
+/// ```
 pub fn comparison_function(func: GLenum) -> GlResult<GLenum> {
     match func {
         GL_NEVER..=GL_ALWAYS => Ok(func),
@@ -174,6 +182,13 @@ pub fn comparison_function(func: GLenum) -> GlResult<GLenum> {
 }
 
 /// The stencil operations (§4.1.5, with GL 1.4's wrapping ones).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::fragment::stencil_operation};
+/// assert!(stencil_operation(GL_INCR_WRAP).is_ok() && stencil_operation(GL_NEVER).is_err());
+/// ```
 pub fn stencil_operation(op: GLenum) -> GlResult<GLenum> {
     match op {
         GL_KEEP | GL_ZERO | GL_REPLACE | GL_INCR | GL_DECR | GL_INVERT | GL_INCR_WRAP
@@ -204,6 +219,13 @@ fn blend_factor(factor: GLenum) -> bool {
 }
 
 /// A source blending factor (table 4.1): any factor, and SRC_ALPHA_SATURATE.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::fragment::blend_source_factor};
+/// assert!(blend_source_factor(GL_SRC_ALPHA_SATURATE).is_ok());
+/// ```
 pub fn blend_source_factor(factor: GLenum) -> GlResult<GLenum> {
     if blend_factor(factor) || factor == GL_SRC_ALPHA_SATURATE {
         Ok(factor)
@@ -213,6 +235,13 @@ pub fn blend_source_factor(factor: GLenum) -> GlResult<GLenum> {
 }
 
 /// A destination blending factor (table 4.2): SRC_ALPHA_SATURATE is for the source only.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::fragment::blend_destination_factor, GlError};
+/// assert_eq!(blend_destination_factor(GL_SRC_ALPHA_SATURATE), Err(GlError::InvalidEnum));
+/// ```
 pub fn blend_destination_factor(factor: GLenum) -> GlResult<GLenum> {
     if blend_factor(factor) {
         Ok(factor)
@@ -222,6 +251,13 @@ pub fn blend_destination_factor(factor: GLenum) -> GlResult<GLenum> {
 }
 
 /// The blend equations (§4.1.8).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::fragment::blend_equation};
+/// assert!(blend_equation(GL_MAX).is_ok() && blend_equation(GL_ADD).is_err());
+/// ```
 pub fn blend_equation(mode: GLenum) -> GlResult<GLenum> {
     match mode {
         GL_FUNC_ADD | GL_FUNC_SUBTRACT | GL_FUNC_REVERSE_SUBTRACT | GL_MIN | GL_MAX => Ok(mode),
@@ -230,6 +266,13 @@ pub fn blend_equation(mode: GLenum) -> GlResult<GLenum> {
 }
 
 /// The sixteen logic operations (table 4.3).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::fragment::logic_operation};
+/// assert!(logic_operation(GL_NAND).is_ok() && logic_operation(GL_AND + 16).is_err());
+/// ```
 pub fn logic_operation(opcode: GLenum) -> GlResult<GLenum> {
     match opcode {
         GL_CLEAR..=GL_SET => Ok(opcode),
@@ -241,6 +284,15 @@ pub fn logic_operation(opcode: GLenum) -> GlResult<GLenum> {
 /// describes: single-buffered, monoscopic, no auxiliary buffers (GL_DOUBLEBUFFER and GL_STEREO
 /// false, GL_AUX_BUFFERS 0). `Err(InvalidEnum)` for a name that is no buffer (§4.2.1),
 /// `Err(InvalidOperation)` for buffers that do not exist here (every one the mode names).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::fragment::color_buffer, GlError};
+/// assert_eq!(color_buffer(GL_FRONT, false), Ok(GL_FRONT));
+/// // Single-buffered, no auxiliary buffers.
+/// assert_eq!(color_buffer(GL_AUX0, false), Err(GlError::InvalidOperation));
+/// ```
 pub fn color_buffer(mode: GLenum, for_reading: bool) -> GlResult<GLenum> {
     match mode {
         GL_FRONT | GL_LEFT | GL_FRONT_LEFT => Ok(mode),

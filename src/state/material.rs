@@ -61,21 +61,55 @@ impl MaterialMask {
     pub const COLOR_INDEXES: MaterialMask = MaterialMask(32);
 
     /// Whether every property of `other` is in the set (never for the empty set).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::material::MaterialMask;
+    /// let both = MaterialMask::AMBIENT.union(MaterialMask::DIFFUSE);
+    /// assert!(both.contains(MaterialMask::DIFFUSE));
+    /// assert!(!both.contains(MaterialMask::SPECULAR));
+    /// assert!(!both.contains(MaterialMask::NONE));
+    /// ```
     pub fn contains(self, other: MaterialMask) -> bool {
         self.0 & other.0 == other.0 && other.0 != 0
     }
 
     /// The properties of both sets.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::material::MaterialMask;
+    /// assert_eq!(MaterialMask::AMBIENT.union(MaterialMask::DIFFUSE), MaterialMask(3));
+    /// ```
     pub fn union(self, other: MaterialMask) -> MaterialMask {
         MaterialMask(self.0 | other.0)
     }
 
     /// The properties of `self` that are not in `other`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::material::MaterialMask;
+    /// let both = MaterialMask::AMBIENT.union(MaterialMask::DIFFUSE);
+    /// assert_eq!(both.without(MaterialMask::AMBIENT), MaterialMask::DIFFUSE);
+    /// ```
     pub fn without(self, other: MaterialMask) -> MaterialMask {
         MaterialMask(self.0 & !other.0)
     }
 
     /// The properties a glMaterial pname sets, or GL_INVALID_ENUM.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::material::MaterialMask};
+    /// let both = MaterialMask::AMBIENT.union(MaterialMask::DIFFUSE);
+    /// assert_eq!(MaterialMask::of_pname(GL_AMBIENT_AND_DIFFUSE)?, both);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn of_pname(pname: GLenum) -> GlResult<MaterialMask> {
         Ok(match pname {
             GL_AMBIENT => Self::AMBIENT,
@@ -90,6 +124,15 @@ impl MaterialMask {
     }
 
     /// The properties a glColorMaterial mode tracks, or GL_INVALID_ENUM.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::material::MaterialMask, GlError};
+    /// assert_eq!(MaterialMask::of_color_material_mode(GL_EMISSION)?, MaterialMask::EMISSION);
+    /// assert_eq!(MaterialMask::of_color_material_mode(GL_SHININESS), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn of_color_material_mode(mode: GLenum) -> GlResult<MaterialMask> {
         match mode {
             GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => {
@@ -101,6 +144,16 @@ impl MaterialMask {
 }
 
 /// The faces a GL_FRONT / GL_BACK / GL_FRONT_AND_BACK argument names, as `[front, back]`.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::material::faces, GlError};
+/// assert_eq!(faces(GL_FRONT_AND_BACK)?, [true, true]);
+/// assert_eq!(faces(GL_BACK)?, [false, true]);
+/// assert_eq!(faces(GL_LEFT), Err(GlError::InvalidEnum));
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn faces(face: GLenum) -> GlResult<[bool; 2]> {
     match face {
         GL_FRONT => Ok([true, false]),
@@ -111,6 +164,14 @@ pub fn faces(face: GLenum) -> GlResult<[bool; 2]> {
 }
 
 /// How many values a glMaterial / glGetMaterial pname takes, or `None` for a bad pname.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::material::material_param_count};
+/// assert_eq!(material_param_count(GL_SHININESS), Some(1));
+/// assert_eq!(material_param_count(GL_COLOR_INDEXES), Some(3));
+/// ```
 pub fn material_param_count(pname: GLenum) -> Option<usize> {
     match pname {
         GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => Some(4),
@@ -121,6 +182,13 @@ pub fn material_param_count(pname: GLenum) -> Option<usize> {
 }
 
 /// Whether `pname` is a color, converted with the signed-integer color mapping in glMaterialiv.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::material::is_material_color};
+/// assert!(is_material_color(GL_EMISSION) && !is_material_color(GL_SHININESS));
+/// ```
 pub fn is_material_color(pname: GLenum) -> bool {
     matches!(
         pname,
@@ -130,6 +198,17 @@ pub fn is_material_color(pname: GLenum) -> bool {
 
 impl Material {
     /// Stores the properties of `mask` from `params` (validated by the caller).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::material::{Material, MaterialMask};
+    /// use glam::Vec4;
+    /// let mut material = Material::default();
+    /// let red = Vec4::new(1.0, 0.0, 0.0, 1.0);
+    /// material.set(MaterialMask::AMBIENT.union(MaterialMask::DIFFUSE), red);
+    /// assert_eq!((material.ambient, material.diffuse), (red, red));
+    /// ```
     pub fn set(&mut self, mask: MaterialMask, params: Vec4) {
         if mask.contains(MaterialMask::AMBIENT) {
             self.ambient = params;
@@ -152,6 +231,14 @@ impl Material {
     }
 
     /// glGetMaterialfv: the stored value, padded to four.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::material::Material};
+    /// assert_eq!(Material::default().get(GL_DIFFUSE)?, glam::Vec4::new(0.8, 0.8, 0.8, 1.0));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get(&self, pname: GLenum) -> GlResult<Vec4> {
         Ok(match pname {
             GL_AMBIENT => self.ambient,
@@ -193,6 +280,18 @@ impl Default for ColorMaterial {
 
 impl ColorMaterial {
     /// The properties of each face that follow the current color: none while disabled.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::material::{ColorMaterial, MaterialMask}};
+    /// let mut color_material = ColorMaterial::default();
+    /// assert_eq!(color_material.tracked(), [MaterialMask::NONE; 2]); // disabled
+    /// color_material.enabled = true;
+    /// color_material.face = GL_FRONT;
+    /// let both = MaterialMask::AMBIENT.union(MaterialMask::DIFFUSE);
+    /// assert_eq!(color_material.tracked(), [both, MaterialMask::NONE]);
+    /// ```
     pub fn tracked(&self) -> [MaterialMask; 2] {
         if !self.enabled {
             return [MaterialMask::NONE; 2];

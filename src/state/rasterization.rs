@@ -40,6 +40,13 @@ impl Default for PointAttribs {
 }
 
 /// How many values a glPointParameter pname takes, or None for a pname that is none.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::rasterization::point_param_count};
+/// assert_eq!(point_param_count(GL_POINT_DISTANCE_ATTENUATION), Some(3));
+/// ```
 pub fn point_param_count(pname: GLenum) -> Option<usize> {
     match pname {
         GL_POINT_DISTANCE_ATTENUATION => Some(3),
@@ -51,6 +58,16 @@ pub fn point_param_count(pname: GLenum) -> Option<usize> {
 impl PointAttribs {
     /// glPointParameter (§3.3): the pname, then the count, then the value; sizes and the
     /// threshold must not be negative.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::rasterization::PointAttribs};
+    /// let mut point = PointAttribs::default();
+    /// point.set(GL_POINT_SIZE_MAX, &[8.0])?;
+    /// assert_eq!(point.size_max, 8.0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set(&mut self, pname: GLenum, params: &[f32]) -> GlResult {
         let count = point_param_count(pname).ok_or(GlError::InvalidEnum)?;
         if params.len() < count {
@@ -71,6 +88,14 @@ impl PointAttribs {
 }
 
 /// A point size or line width: positive (§3.3, §3.4).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{state::rasterization::positive_size, GlError};
+/// assert_eq!(positive_size(1.5), Ok(1.5));
+/// assert_eq!(positive_size(0.0), Err(GlError::InvalidValue));
+/// ```
 pub fn positive_size(size: f32) -> GlResult<f32> {
     if size > 0.0 {
         Ok(size)

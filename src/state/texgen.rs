@@ -48,6 +48,14 @@ impl Default for TexGen {
 }
 
 /// The index (s 0 to q 3) of glTexGen's `coord`.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::texgen::coord_index};
+/// assert_eq!(coord_index(GL_R), Ok(2));
+/// assert!(coord_index(GL_TEXTURE_GEN_S).is_err());
+/// ```
 pub fn coord_index(coord: GLenum) -> GlResult<usize> {
     match coord {
         GL_S..=GL_Q => Ok((coord - GL_S) as usize),
@@ -56,6 +64,13 @@ pub fn coord_index(coord: GLenum) -> GlResult<usize> {
 }
 
 /// How many values glTexGen's `pname` takes (0 for a bad pname: the command rejects it).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::texgen::tex_gen_param_count};
+/// assert_eq!((tex_gen_param_count(GL_EYE_PLANE), tex_gen_param_count(GL_TEXTURE_GEN_MODE)), (4, 1));
+/// ```
 pub fn tex_gen_param_count(pname: GLenum) -> usize {
     match pname {
         GL_TEXTURE_GEN_MODE => 1,

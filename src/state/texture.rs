@@ -37,11 +37,26 @@ impl Target {
     ];
 
     /// The target glBindTexture, glTexParameter and glEnable name, or None.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture::Target};
+    /// assert_eq!(Target::of(GL_TEXTURE_3D), Some(Target::Texture3D));
+    /// assert_eq!(Target::of(GL_PROXY_TEXTURE_3D), None);
+    /// ```
     pub fn of(target: GLenum) -> Option<Target> {
         Target::ALL.into_iter().find(|t| t.enumeration() == target)
     }
 
     /// The target's enum (GL_TEXTURE_1D ...).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture::Target};
+    /// assert_eq!(Target::CubeMap.enumeration(), GL_TEXTURE_CUBE_MAP);
+    /// ```
     pub fn enumeration(self) -> GLenum {
         match self {
             Target::Texture1D => GL_TEXTURE_1D,
@@ -52,6 +67,13 @@ impl Target {
     }
 
     /// The query of the unit's binding of this target.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture::Target};
+    /// assert_eq!(Target::Texture2D.binding_pname(), GL_TEXTURE_BINDING_2D);
+    /// ```
     pub fn binding_pname(self) -> GLenum {
         match self {
             Target::Texture1D => GL_TEXTURE_BINDING_1D,
@@ -62,6 +84,13 @@ impl Target {
     }
 
     /// The proxy target of the same kind.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture::Target};
+    /// assert_eq!(Target::Texture1D.proxy(), GL_PROXY_TEXTURE_1D);
+    /// ```
     pub fn proxy(self) -> GLenum {
         match self {
             Target::Texture1D => GL_PROXY_TEXTURE_1D,
@@ -72,6 +101,13 @@ impl Target {
     }
 
     /// The number of dimensions of its images.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::Target;
+    /// assert_eq!((Target::Texture3D.dimensions(), Target::CubeMap.dimensions()), (3, 2));
+    /// ```
     pub fn dimensions(self) -> usize {
         match self {
             Target::Texture1D => 1,
@@ -82,6 +118,13 @@ impl Target {
 
     /// GL_MAX_TEXTURE_SIZE, GL_MAX_3D_TEXTURE_SIZE or GL_MAX_CUBE_MAP_TEXTURE_SIZE: small
     /// enough that a largest image, stored as four floats a texel, fits in memory.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::Target;
+    /// assert_eq!((Target::Texture2D.max_size(), Target::Texture3D.max_size()), (2048, 128));
+    /// ```
     pub fn max_size(self) -> i32 {
         match self {
             Target::Texture1D | Target::Texture2D => 2048,
@@ -91,6 +134,13 @@ impl Target {
     }
 
     /// The number of levels: log2 of the largest size, plus one.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::Target;
+    /// assert_eq!(Target::Texture2D.levels(), 12); // 2048 down to 1
+    /// ```
     pub fn levels(self) -> usize {
         self.max_size().trailing_zeros() as usize + 1
     }
