@@ -151,6 +151,14 @@ pub fn map1_values(target: GLenum, stride: GLint, order: GLint) -> usize {
 }
 
 /// How many values glMap2 reads.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::eval::map2_values};
+/// // 2 x 2 points of 3 values: u stride 3, v stride 6; the last point starts at 3 + 6.
+/// assert_eq!(map2_values(GL_MAP2_VERTEX_3, 3, 2, 6, 2), 3 + 6 + 3);
+/// ```
 pub fn map2_values(
     target: GLenum,
     ustride: GLint,
@@ -180,6 +188,18 @@ impl Maps {
     /// glMap1 / glMap2 (§5.1): Mesa's order of checks (the target, the domain, the orders,
     /// the strides). `points` holds the values `map_values` counts (fewer: a NULL pointer,
     /// GL_INVALID_VALUE).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::eval::Maps, GlError};
+    /// let mut maps = Maps::default();
+    /// maps.set(GL_MAP1_COLOR_4, 1, [0.0, 1.0, 0.0, 0.0], [4, 0], [1, 0], &[1.0, 0.0, 0.0, 1.0])?;
+    /// assert_eq!(maps.get(GL_MAP1_COLOR_4, GL_COEFF)?, [1.0, 0.0, 0.0, 1.0]);
+    /// // u1 = u2 is GL_INVALID_VALUE.
+    /// assert_eq!(maps.set(GL_MAP1_COLOR_4, 1, [1.0, 1.0, 0.0, 0.0], [4, 0], [1, 0], &[0.0; 4]), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set(
         &mut self,
         target: GLenum,
@@ -235,6 +255,16 @@ impl Maps {
     }
 
     /// glGetMap (§6.1.3): GL_COEFF, GL_ORDER or GL_DOMAIN of a map.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::eval::Maps};
+    /// let maps = Maps::default();
+    /// assert_eq!(maps.get(GL_MAP2_TEXTURE_COORD_2, GL_ORDER)?, [1.0, 1.0]);
+    /// assert_eq!(maps.get(GL_MAP2_TEXTURE_COORD_2, GL_DOMAIN)?, [0.0, 1.0, 0.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get(&self, target: GLenum, query: GLenum) -> GlResult<Vec<f64>> {
         let dimensions = if map_kind(target, 1).is_ok() { 1 } else { 2 };
         let map = &self.maps[dimensions - 1][map_kind(target, dimensions)?];
@@ -282,6 +312,19 @@ fn de_casteljau(points: &mut [[f64; 4]], t: f64) -> ([f64; 4], [f64; 4]) {
 impl Map {
     /// The map at domain point (u, v) (§5.1: p((u - u1) / (u2 - u1), (v - v1) / (v2 - v1))),
     /// with the derivatives of the value with respect to u and v themselves.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::eval::{Maps, VERTEX_3}};
+    /// let mut maps = Maps::default();
+    /// // A quadratic curve through (0, 0, 0), control (1, 2, 0), (2, 0, 0).
+    /// let points = [0.0, 0.0, 0.0, 1.0, 2.0, 0.0, 2.0, 0.0, 0.0];
+    /// maps.set(GL_MAP1_VERTEX_3, 1, [0.0, 1.0, 0.0, 0.0], [3, 0], [3, 0], &points)?;
+    /// let at = maps.maps[0][VERTEX_3].evaluate(3, 0.5, 0.0);
+    /// assert_eq!(&at.value[..3], [1.0, 1.0, 0.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn evaluate(&self, k: usize, u: f64, v: f64) -> Evaluated {
         let [u1, u2, v1, v2] = self.domain;
         let s = (u - u1) / (u2 - u1);

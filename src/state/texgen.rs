@@ -83,6 +83,19 @@ impl TexGen {
     /// glTexGen{ifd}v (§2.11.4) for coordinate `coord` (0 to 3): Mesa's order of checks, the
     /// pname, then the mode (GL_SPHERE_MAP for s and t only, GL_NORMAL_MAP and
     /// GL_REFLECTION_MAP not for q). `modelview` turns an eye plane into eye coordinates.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texgen::TexGen};
+    /// use glam::DMat4;
+    /// let mut generation = TexGen::default();
+    /// let modelview = DMat4::from_translation(glam::DVec3::new(0.0, 0.0, -1.0));
+    /// generation.set(0, GL_EYE_PLANE, &[0.0, 0.0, 1.0, 0.0], &modelview)?;
+    /// // The plane times the inverse modelview: z >= -1 becomes z + 1 >= 0.
+    /// assert_eq!(generation.get(0, GL_EYE_PLANE)?, [0.0, 0.0, 1.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set(
         &mut self,
         coord: usize,
@@ -125,6 +138,14 @@ impl TexGen {
     }
 
     /// glGetTexGen{ifd}v: the mode, or a plane (the eye plane in eye coordinates).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texgen::TexGen};
+    /// assert_eq!(TexGen::default().get(3, GL_TEXTURE_GEN_MODE)?, [GL_EYE_LINEAR as f64]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get(&self, coord: usize, pname: GLenum) -> GlResult<Vec<f64>> {
         let coord_gen = &self.coords[coord];
         let plane = |p: Vec4| p.as_dvec4().to_array().to_vec();
@@ -137,6 +158,16 @@ impl TexGen {
     }
 
     /// The generation a vertex needs, or None when no coordinate is generated.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texgen::TexGen;
+    /// let mut generation = TexGen::default();
+    /// assert!(generation.prepared().is_none()); // nothing enabled
+    /// generation.coords[0].enabled = true;
+    /// assert!(generation.prepared().is_some_and(|p| p.coords[0].is_some() && p.coords[1].is_none()));
+    /// ```
     pub fn prepared(&self) -> Option<PreparedTexGen> {
         self.coords
             .iter()
@@ -193,6 +224,20 @@ pub struct GenInput {
 impl PreparedTexGen {
     /// The texture coordinates of a vertex whose current ones are `current` (§2.11.4), in
     /// double precision.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texgen::{GenInput, TexGen};
+    /// use glam::{DVec3, DVec4, Vec4};
+    /// let mut generation = TexGen::default();
+    /// // Initially GL_EYE_LINEAR with s's eye plane (1, 0, 0, 0): s = eye x.
+    /// generation.coords[0].enabled = true;
+    /// let prepared = generation.prepared().unwrap();
+    /// let eye = DVec4::new(0.25, 0.0, 0.0, 1.0);
+    /// let input = GenInput { object: DVec4::W, eye, normal: DVec3::Z };
+    /// assert_eq!(prepared.generate(&input, Vec4::new(9.0, 8.0, 7.0, 1.0)), Vec4::new(0.25, 8.0, 7.0, 1.0));
+    /// ```
     pub fn generate(&self, input: &GenInput, current: Vec4) -> Vec4 {
         let mut reflection = None;
         let mut reflect = || {
