@@ -23,7 +23,8 @@ deps:
 build: deps
 	$(CARGO) build
 
-# Regenerates include/fflight.h from the sources (tests/header.rs fails when it is stale).
+# Regenerates include/fflight.h, include/fflight_prefixed.h and src/capi/generated.rs from the
+# sources (tests/header.rs fails when one is stale).
 header:
 	FFLIGHT_BLESS=1 $(CARGO) build
 
