@@ -8,7 +8,7 @@ CFLAGS_STRICT := -std=c99 -Wall -Wextra -Werror -pedantic
 LIB := target/debug/libfflight.a
 DEMO_DIR := target/demo
 
-.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind prefixed
+.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind prefixed test-cinstall
 
 all: build
 
@@ -142,6 +142,27 @@ test-install:
 	$(INSTALL_TEST)/cmake/hello_cmake
 	$(MAKE) --no-print-directory uninstall PREFIX=$(INSTALL_TEST)/prefix
 	test -z "$$(find $(INSTALL_TEST)/prefix -type f -o -type l)"
+
+# cargo-c's install (`cargo cinstall`, Cargo.toml's [package.metadata.capi]) into a temporary
+# root: the SONAME, the header, and tests/install/hello.c built against its pkg-config file,
+# shared and static. Not run by `make test`: cargo-c itself takes about 45 minutes to build on
+# 2 cores (`cargo install cargo-c --locked`; 0.10.24 is the last release for rustc 1.95).
+CINSTALL_TEST := $(CURDIR)/target/cinstall-test
+CINSTALL_PREFIX := $(CINSTALL_TEST)/root/usr/local
+CINSTALL_PC = PKG_CONFIG_PATH=$(CINSTALL_PREFIX)/lib/pkgconfig pkg-config --define-variable=prefix=$(CINSTALL_PREFIX)
+test-cinstall:
+	@command -v cargo-cinstall > /dev/null || { echo "cargo-c is not installed: cargo install cargo-c --locked"; exit 1; }
+	rm -rf $(CINSTALL_TEST)
+	$(CARGO) cinstall --release --prefix=/usr/local --libdir=/usr/local/lib --destdir=$(CINSTALL_TEST)/root
+	readelf -d $(CINSTALL_PREFIX)/lib/libfflight.so.$(VERSION) | grep -q 'SONAME.*libfflight.so.$(MAJOR)'
+	cmp include/fflight.h $(CINSTALL_PREFIX)/include/fflight.h
+	$(CC) -std=c99 -Wall -Werror tests/install/hello.c $$($(CINSTALL_PC) --cflags --libs fflight) -lm \
+		-o $(CINSTALL_TEST)/hello_shared
+	$(CC) -std=c99 -Wall -Werror tests/install/hello.c $$($(CINSTALL_PC) --cflags fflight) \
+		$(CINSTALL_PREFIX)/lib/libfflight.a $$($(CINSTALL_PC) --libs-only-other --static fflight) -lm -lpthread -ldl \
+		-o $(CINSTALL_TEST)/hello_static
+	LD_LIBRARY_PATH=$(CINSTALL_PREFIX)/lib $(CINSTALL_TEST)/hello_shared
+	$(CINSTALL_TEST)/hello_static
 
 # ---- the C test programs under AddressSanitizer and UndefinedBehaviorSanitizer ----
 # Each c_tests program, built against libfflight.a with the sanitizers on the C side (the
