@@ -10,7 +10,7 @@ CFLAGS_STRICT := -std=c99 -Wall -Wextra -Werror -pedantic
 LIB := target/debug/libfflight.a
 DEMO_DIR := target/demo
 
-.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind test-window
+.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind test-window prefixed test-cinstall
 
 all: build
 
@@ -25,7 +25,8 @@ deps:
 build: deps
 	$(CARGO) build
 
-# Regenerates include/fflight.h from the sources (tests/header.rs fails when it is stale).
+# Regenerates include/fflight.h, include/fflight_prefixed.h and src/capi/generated.rs from the
+# sources (tests/header.rs fails when one is stale).
 header:
 	FFLIGHT_BLESS=1 $(CARGO) build
 
@@ -41,13 +42,21 @@ test: build
 	$(MAKE) --no-print-directory test-sanitize
 	$(MAKE) --no-print-directory test-valgrind
 
-demo: build
+# The demo scene (examples/demo/scene.c: a lit sphere on a lit floor, three lights) through
+# fflight and through OSMesa, fed back and compared: a short summary, the raw rows in
+# target/demo/{fflight,osmesa}.txt (VERBOSE=1 prints them side by side), and both renderings
+# with a map of their differences in target/demo/fflight-vs-osmesa.png.
+DEMO_PACKAGES := python3-pil
+demo:
+	@$(MAKE) --no-print-directory deps PACKAGES="$(PACKAGES) $(DEMO_PACKAGES)"
+	$(CARGO) build
 	@mkdir -p $(DEMO_DIR)
 	$(CC) $(CFLAGS_STRICT) -D_DEFAULT_SOURCE examples/demo/scene.c $(LIB) -lm -lpthread -ldl -o $(DEMO_DIR)/scene_fflight
 	$(CC) $(CFLAGS_STRICT) -D_DEFAULT_SOURCE -DUSE_OSMESA examples/demo/scene.c -lOSMesa -lm -o $(DEMO_DIR)/scene_osmesa
 	$(DEMO_DIR)/scene_fflight > $(DEMO_DIR)/fflight.txt
 	$(DEMO_DIR)/scene_osmesa > $(DEMO_DIR)/osmesa.txt
-	python3 examples/demo/compare.py $(DEMO_DIR)/fflight.txt $(DEMO_DIR)/osmesa.txt
+	@$(BENCH_PYTHON) examples/demo/compare.py $(DEMO_DIR)/fflight.txt $(DEMO_DIR)/osmesa.txt \
+		--picture $(DEMO_DIR)/fflight-vs-osmesa.png $(if $(VERBOSE),--verbose,)
 
 # fflight (release) vs OSMesa on the same scenes in the same run: one table of ns per vertex,
 # speed ratios and targets (also target/bench/results.md), and a plot against the number of
@@ -72,6 +81,15 @@ bench:
 clean:
 	$(CARGO) clean
 
+# Every GL entry point renamed ffl_glX in a static library of its own, for programs that also
+# link a real GL library (docs/coexistence.md): target/prefixed/libfflight_prefixed.a, declared
+# by include/fflight_prefixed.h (tests/prefixed.rs checks both and links one with OSMesa).
+PREFIXED_LIB := target/prefixed/libfflight_prefixed.a
+prefixed:
+	$(CARGO) build $(if $(filter release,$(PROFILE)),--release,)
+	@mkdir -p target/prefixed
+	tools/prefix_library.sh target/$(PROFILE)/libfflight.a $(PREFIXED_LIB)
+
 # ---- installation: make install PREFIX=/usr/local DESTDIR= (PROFILE=release) ----
 # The shared library as libfflight.so.VERSION with the SONAME libfflight.so.MAJOR (set by
 # build.rs) and its two links, the static library, the header, a pkg-config file and a CMake
@@ -84,17 +102,19 @@ MAJOR := $(firstword $(subst ., ,$(VERSION)))
 INSTALL_ROOT = $(DESTDIR)$(PREFIX)
 INSTALLED = lib/libfflight.so.$(VERSION) lib/libfflight.so.$(MAJOR) lib/libfflight.so \
 	lib/libfflight.a include/fflight.h lib/pkgconfig/fflight.pc \
+	lib/libfflight_prefixed.a include/fflight_prefixed.h \
 	lib/cmake/fflight/fflightConfig.cmake lib/cmake/fflight/fflightConfigVersion.cmake
 SUBSTITUTE = sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@MAJOR@|$(MAJOR)|g'
 
-install:
-	$(CARGO) build $(if $(filter release,$(PROFILE)),--release,)
+install: prefixed
 	install -d $(INSTALL_ROOT)/lib/pkgconfig $(INSTALL_ROOT)/lib/cmake/fflight $(INSTALL_ROOT)/include
 	install -m 755 target/$(PROFILE)/libfflight.so $(INSTALL_ROOT)/lib/libfflight.so.$(VERSION)
 	ln -sf libfflight.so.$(VERSION) $(INSTALL_ROOT)/lib/libfflight.so.$(MAJOR)
 	ln -sf libfflight.so.$(MAJOR) $(INSTALL_ROOT)/lib/libfflight.so
 	install -m 644 target/$(PROFILE)/libfflight.a $(INSTALL_ROOT)/lib/libfflight.a
 	install -m 644 include/fflight.h $(INSTALL_ROOT)/include/fflight.h
+	install -m 644 $(PREFIXED_LIB) $(INSTALL_ROOT)/lib/libfflight_prefixed.a
+	install -m 644 include/fflight_prefixed.h $(INSTALL_ROOT)/include/fflight_prefixed.h
 	$(SUBSTITUTE) build/install/fflight.pc.in > $(INSTALL_ROOT)/lib/pkgconfig/fflight.pc
 	$(SUBSTITUTE) build/install/fflightConfig.cmake.in > $(INSTALL_ROOT)/lib/cmake/fflight/fflightConfig.cmake
 	$(SUBSTITUTE) build/install/fflightConfigVersion.cmake.in > $(INSTALL_ROOT)/lib/cmake/fflight/fflightConfigVersion.cmake
@@ -125,6 +145,27 @@ test-install:
 	$(INSTALL_TEST)/cmake/hello_cmake
 	$(MAKE) --no-print-directory uninstall PREFIX=$(INSTALL_TEST)/prefix
 	test -z "$$(find $(INSTALL_TEST)/prefix -type f -o -type l)"
+
+# cargo-c's install (`cargo cinstall`, Cargo.toml's [package.metadata.capi]) into a temporary
+# root: the SONAME, the header, and tests/install/hello.c built against its pkg-config file,
+# shared and static. Not run by `make test`: cargo-c itself takes about 45 minutes to build on
+# 2 cores (`cargo install cargo-c --locked`; 0.10.24 is the last release for rustc 1.95).
+CINSTALL_TEST := $(CURDIR)/target/cinstall-test
+CINSTALL_PREFIX := $(CINSTALL_TEST)/root/usr/local
+CINSTALL_PC = PKG_CONFIG_PATH=$(CINSTALL_PREFIX)/lib/pkgconfig pkg-config --define-variable=prefix=$(CINSTALL_PREFIX)
+test-cinstall:
+	@command -v cargo-cinstall > /dev/null || { echo "cargo-c is not installed: cargo install cargo-c --locked"; exit 1; }
+	rm -rf $(CINSTALL_TEST)
+	$(CARGO) cinstall --release --prefix=/usr/local --libdir=/usr/local/lib --destdir=$(CINSTALL_TEST)/root
+	readelf -d $(CINSTALL_PREFIX)/lib/libfflight.so.$(VERSION) | grep -q 'SONAME.*libfflight.so.$(MAJOR)'
+	cmp include/fflight.h $(CINSTALL_PREFIX)/include/fflight.h
+	$(CC) -std=c99 -Wall -Werror tests/install/hello.c $$($(CINSTALL_PC) --cflags --libs fflight) -lm \
+		-o $(CINSTALL_TEST)/hello_shared
+	$(CC) -std=c99 -Wall -Werror tests/install/hello.c $$($(CINSTALL_PC) --cflags fflight) \
+		$(CINSTALL_PREFIX)/lib/libfflight.a $$($(CINSTALL_PC) --libs-only-other --static fflight) -lm -lpthread -ldl \
+		-o $(CINSTALL_TEST)/hello_static
+	LD_LIBRARY_PATH=$(CINSTALL_PREFIX)/lib $(CINSTALL_TEST)/hello_shared
+	$(CINSTALL_TEST)/hello_static
 
 # ---- the C test programs under AddressSanitizer and UndefinedBehaviorSanitizer ----
 # Each c_tests program, built against libfflight.a with the sanitizers on the C side (the

@@ -45,9 +45,49 @@ fn main() {
     let header = guard_gl_names(&String::from_utf8(bindings).expect("cbindgen writes UTF-8"));
     let header = match_gl_array_parameters(header);
 
+    let prefixed = prefixed_header(&header);
     fs::write(out_dir.join("fflight.h"), &header).expect("OUT_DIR is writable");
+    fs::write(out_dir.join("fflight_prefixed.h"), &prefixed).expect("OUT_DIR is writable");
     if bless {
         fs::write(crate_dir.join("include/fflight.h"), &header).expect("include/ is writable");
+        fs::write(crate_dir.join("include/fflight_prefixed.h"), &prefixed)
+            .expect("include/ is writable");
+    }
+}
+
+/// The header of libfflight_prefixed.a (tools/prefix_library.sh, docs/coexistence.md): the
+/// same declarations with every GL function named `ffl_glX`, so that a program can include it
+/// after the system <GL/gl.h> and call both libraries. Declarations start at column 0 and
+/// name their function on their first line (comment lines start with a space).
+fn prefixed_header(header: &str) -> String {
+    let mut out = String::from(
+        "/* fflight_prefixed.h: include/fflight.h for libfflight_prefixed.a, every GL function\n   \
+         named ffl_glX (glLightfv is ffl_glLightfv); the ffl* functions keep their names. For\n   \
+         programs that also link a real GL library: see docs/coexistence.md. */\n",
+    );
+    for line in header.lines() {
+        let renamed = match line.as_bytes().first() {
+            Some(c) if c.is_ascii_alphabetic() && line.contains('(') => prefix_gl_call(line),
+            Some(b'#') => line.replace("FFLIGHT_H", "FFLIGHT_PREFIXED_H"),
+            _ => line.to_string(),
+        };
+        out.push_str(&renamed);
+        out.push('\n');
+    }
+    out
+}
+
+/// `ffl_` before the GL function name a declaration line names (`void glEnd(void);`).
+fn prefix_gl_call(line: &str) -> String {
+    let open = line.find('(').expect("a declaration has a `(`");
+    let start = line[..open]
+        .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .map_or(0, |i| i + 1);
+    let name = &line[start..open];
+    if name.starts_with("gl") && name[2..].starts_with(|c: char| c.is_ascii_uppercase()) {
+        format!("{}ffl_{}", &line[..start], &line[start..])
+    } else {
+        line.to_string()
     }
 }
 

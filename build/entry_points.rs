@@ -314,15 +314,29 @@ fn write_table_commands(out: &mut String, entries: &[EntryPoint]) {
          pub enum TableCommand {\n",
     );
     for entry in &recordable {
-        let fields: Vec<String> = entry
-            .parameters
-            .iter()
-            .map(|p| match p.pointer {
-                Some(_) => format!("{}: Vec<{}>", p.name, pointee(&p.rust_type)),
-                None => format!("{}: {}", p.name, p.rust_type),
-            })
-            .collect();
-        let _ = writeln!(out, "    {}{},", entry.name, braced(&fields));
+        let _ = writeln!(out, "    /// {}, compiled into a list.", entry.name);
+        if entry.parameters.is_empty() {
+            let _ = writeln!(out, "    {} {{}},", entry.name);
+            continue;
+        }
+        let _ = writeln!(out, "    {} {{", entry.name);
+        for p in &entry.parameters {
+            let _ = match p.pointer {
+                Some(_) => writeln!(
+                    out,
+                    "        /// The values `{0}` pointed to at compile time.\n        \
+                     {0}: Vec<{1}>,",
+                    p.name,
+                    pointee(&p.rust_type)
+                ),
+                None => writeln!(
+                    out,
+                    "        /// `{0}`, as given.\n        {0}: {1},",
+                    p.name, p.rust_type
+                ),
+            };
+        }
+        out.push_str("    },\n");
     }
     out.push_str(
         "}\n\nimpl TableCommand {\n    \

@@ -31,8 +31,11 @@ use crate::state::rasterization::{
 /// glRenderMode's modes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RenderMode {
+    /// GL_RENDER: primitives are rasterized (here: go nowhere but capture).
     Render,
+    /// GL_FEEDBACK (§5.3).
     Feedback,
+    /// GL_SELECT (§5.2).
     Select,
 }
 
@@ -117,6 +120,17 @@ impl Default for Context {
 
 impl Context {
     /// A context with GL's initial state.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// // GL's initial state: lighting off, GL_LIGHT0's diffuse color white.
+    /// assert!(!ctx.is_enabled(GL_LIGHTING)?);
+    /// assert_eq!(ctx.get_light(GL_LIGHT0, GL_DIFFUSE)?.0, glam::Vec4::ONE);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn new() -> Context {
         Context {
             error: ErrorFlag::default(),
@@ -168,16 +182,50 @@ impl Context {
     }
 
     /// Records `error` unless an earlier one is still unread.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.record_error(GlError::InvalidValue);
+    /// ctx.record_error(GlError::InvalidEnum); // the first error is kept until read
+    /// assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    /// assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    /// ```
     pub fn record_error(&mut self, error: GlError) {
         self.error.record(error);
     }
 
     /// glGetError.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// let result = ctx.set_capability(0x1234, true); // not a capability
+    /// ctx.settle(result);
+    /// assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    /// assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    /// ```
     pub fn get_error(&mut self) -> GLenum {
         self.error.take()
     }
 
     /// Runs a command's result into the error flag: the C layer's single exit.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// let result = ctx.is_enabled(GL_LIGHTING);
+    /// assert_eq!(ctx.settle(result), false);
+    /// let result = ctx.is_enabled(0x1234);
+    /// assert_eq!(ctx.settle(result), false); // the default value, and the error recorded
+    /// assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    /// ```
     pub fn settle<T: Default>(&mut self, result: GlResult<T>) -> T {
         result.unwrap_or_else(|error| {
             self.record_error(error);
@@ -186,12 +234,35 @@ impl Context {
     }
 
     /// Whether the context is between glBegin and glEnd.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.begin(GL_POINTS)?;
+    /// assert!(ctx.inside_begin_end());
+    /// ctx.end()?;
+    /// assert!(!ctx.inside_begin_end());
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn inside_begin_end(&self) -> bool {
         self.primitive.is_some()
     }
 
     /// glFlush / glFinish: every command completes before it returns, so only the
     /// glBegin/glEnd check remains.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.finish()?;
+    /// ctx.begin(GL_LINES)?;
+    /// assert_eq!(ctx.finish(), Err(GlError::InvalidOperation));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn finish(&self) -> GlResult {
         self.outside_begin_end()
     }
@@ -217,6 +288,20 @@ impl Context {
     }
 
     /// The derived per-vertex constants, rebuilt if a state change made them stale.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.set_capability(GL_LIGHTING, true)?;
+    /// ctx.set_capability(GL_LIGHT0, true)?;
+    /// ctx.light_model_scalar(GL_LIGHT_MODEL_TWO_SIDE, 1.0)?;
+    /// let derived = ctx.derived();
+    /// assert!(derived.lighting.enabled && derived.lighting.two_side);
+    /// assert_eq!(derived.lighting.lights().count(), 1);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn derived(&mut self) -> &DerivedState {
         self.shared_derived_ref()
     }

@@ -20,6 +20,17 @@ pub struct FflContext {
 }
 
 impl FflContext {
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::current::{FflContext, current_handle, make_current};
+    /// let context = FflContext::new();
+    /// make_current(Some(context.clone()))?;
+    /// assert!(current_handle().is_some_and(|h| std::sync::Arc::ptr_eq(&h, &context)));
+    /// make_current(None)?; // back to the thread's default context
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn new() -> Arc<FflContext> {
         Arc::new(FflContext {
             idle: Mutex::new(Some(Box::new(Context::new()))),
@@ -35,6 +46,13 @@ impl FflContext {
     }
 
     /// Whether this is some thread's default context (only the thread's end destroys it).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::current::FflContext;
+    /// assert!(!FflContext::new().is_thread_default());
+    /// ```
     pub fn is_thread_default(&self) -> bool {
         self.thread_default
     }
@@ -81,6 +99,16 @@ fn default_handle() -> Option<Arc<FflContext>> {
 
 /// Runs `f` on this thread's current context; with none current, on the thread's default one.
 /// `None` when the thread is exiting or the call is re-entrant (a GL call from a callback).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{current::with_current, gl::*};
+/// // The thread's default context, created on first use, as the C entry points see it.
+/// with_current(|ctx| ctx.set_capability(GL_LIGHTING, true)).unwrap()?;
+/// assert_eq!(with_current(|ctx| ctx.is_enabled(GL_LIGHTING)).unwrap(), Ok(true));
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
     CURRENT
         .try_with(|slot| {
@@ -103,6 +131,19 @@ pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
 
 /// Makes `handle` current on this thread (`None` releases the current one). A context that is
 /// current on another thread is GL_INVALID_OPERATION, and nothing changes.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{current::{FflContext, make_current, with_current}, gl::*};
+/// let context = FflContext::new();
+/// make_current(Some(context.clone()))?;
+/// with_current(|ctx| ctx.set_capability(GL_NORMALIZE, true)).unwrap()?;
+/// make_current(None)?;
+/// // The default context did not see the change.
+/// assert_eq!(with_current(|ctx| ctx.is_enabled(GL_NORMALIZE)).unwrap(), Ok(false));
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn make_current(handle: Option<Arc<FflContext>>) -> GlResult {
     CURRENT
         .try_with(|slot| {
@@ -131,6 +172,17 @@ pub fn make_current(handle: Option<Arc<FflContext>>) -> GlResult {
 }
 
 /// The handle of this thread's current context, if any.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::current::{current_handle, make_current, with_current};
+/// make_current(None)?;
+/// assert!(current_handle().is_none());
+/// with_current(|_| ()); // a GL call makes the thread's default context current
+/// assert!(current_handle().is_some_and(|h| h.is_thread_default()));
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn current_handle() -> Option<Arc<FflContext>> {
     CURRENT
         .try_with(|slot| {
@@ -142,6 +194,19 @@ pub fn current_handle() -> Option<Arc<FflContext>> {
 }
 
 /// Whether the context behind `handle` is current on some thread other than this one.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::current::{current_elsewhere, make_current, FflContext};
+/// let context = FflContext::new();
+/// make_current(Some(context.clone()))?;
+/// assert!(!current_elsewhere(&context)); // current here, not on another thread
+/// let other = context.clone();
+/// std::thread::spawn(move || assert!(current_elsewhere(&other))).join().unwrap();
+/// make_current(None)?;
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn current_elsewhere(handle: &Arc<FflContext>) -> bool {
     let here = current_handle().is_some_and(|current| Arc::ptr_eq(&current, handle));
     !here

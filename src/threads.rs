@@ -15,6 +15,17 @@ pub const MAX_THREADS: usize = 256;
 /// Sets how many threads large draws and bulk calls use: 1 runs everything on the calling
 /// thread, 0 restores the default (`FFLIGHT_THREADS`, else the number of cores). Counts above
 /// [`MAX_THREADS`] are clamped to it; a negative count is GL_INVALID_VALUE.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{threads::{set_threads, thread_count}, GlError};
+/// set_threads(2)?;
+/// assert_eq!(thread_count(), 2);
+/// assert_eq!(set_threads(-1), Err(GlError::InvalidValue));
+/// set_threads(0)?; // back to the default
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn set_threads(count: i32) -> GlResult {
     let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
     REQUESTED.store(count.min(MAX_THREADS), Ordering::Relaxed);
@@ -22,6 +33,13 @@ pub fn set_threads(count: i32) -> GlResult {
 }
 
 /// The number of threads in use: the count set, or the default.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::threads::thread_count;
+/// assert!(thread_count() >= 1);
+/// ```
 pub fn thread_count() -> usize {
     match REQUESTED.load(Ordering::Relaxed) {
         0 => default_thread_count(),
@@ -34,6 +52,13 @@ pub const MIN_VERTICES_PER_THREAD: usize = 16 * 1024;
 
 /// How many threads `vertices` vertices of work use: at most the thread count, and no more
 /// than give each `MIN_VERTICES_PER_THREAD`; at least 1.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::threads::threads_for;
+/// assert_eq!(threads_for(100), 1); // too little work to share
+/// ```
 pub fn threads_for(vertices: usize) -> usize {
     thread_count()
         .min(vertices / MIN_VERTICES_PER_THREAD)

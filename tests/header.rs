@@ -10,26 +10,38 @@ fn manifest_dir() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
-#[test]
-fn checked_in_header_matches_the_generated_one() {
-    let generated = include_str!(concat!(env!("OUT_DIR"), "/fflight.h"));
-    let checked_in = std::fs::read_to_string(manifest_dir().join("include/fflight.h"))
-        .expect("include/fflight.h exists");
+/// `path`, checked in, equals what build.rs generated this build.
+fn assert_fresh(generated: &str, path: &str) {
+    let checked_in = std::fs::read_to_string(manifest_dir().join(path))
+        .unwrap_or_else(|e| panic!("{path}: {e}"));
     assert!(
         generated == checked_in,
-        "include/fflight.h is stale: run `make header` (FFLIGHT_BLESS=1 cargo build) and commit it"
+        "{path} is stale: run `make header` (FFLIGHT_BLESS=1 cargo build) and commit it"
+    );
+}
+
+#[test]
+fn checked_in_header_matches_the_generated_one() {
+    assert_fresh(
+        include_str!(concat!(env!("OUT_DIR"), "/fflight.h")),
+        "include/fflight.h",
+    );
+}
+
+/// The header of libfflight_prefixed.a (docs/coexistence.md, tests/prefixed.rs).
+#[test]
+fn checked_in_prefixed_header_matches_the_generated_one() {
+    assert_fresh(
+        include_str!(concat!(env!("OUT_DIR"), "/fflight_prefixed.h")),
+        "include/fflight_prefixed.h",
     );
 }
 
 #[test]
 fn checked_in_entry_points_match_the_table() {
-    let generated = include_str!(concat!(env!("OUT_DIR"), "/generated.rs"));
-    let checked_in = std::fs::read_to_string(manifest_dir().join("src/capi/generated.rs"))
-        .expect("src/capi/generated.rs exists");
-    assert!(
-        generated == checked_in,
-        "src/capi/generated.rs is stale: run `make header` (FFLIGHT_BLESS=1 cargo build) and \
-         commit it"
+    assert_fresh(
+        include_str!(concat!(env!("OUT_DIR"), "/generated.rs")),
+        "src/capi/generated.rs",
     );
 }
 

@@ -1,7 +1,11 @@
-/* A legacy-style OpenGL 1.x program: a lit sphere of points under three lights (directional,
- * attenuated point light, spot light), two materials and color material, read back through
- * feedback. It includes only <GL/gl.h>: `make demo` links it once against libfflight and once
- * against OSMesa (-DUSE_OSMESA) and prints the two results side by side. */
+/* A legacy-style OpenGL 1.x program: a lit sphere (quad strips, color material) on a lit
+ * floor (quads) under three lights (directional, attenuated point light, spot light), back
+ * faces culled, read back through feedback. It includes only <GL/gl.h>: `make demo` links it
+ * once against libfflight and once against OSMesa (-DUSE_OSMESA), compares the two outputs
+ * and draws both (examples/demo/compare.py).
+ *
+ * Output: `viewport W H`, then for each polygon fed back, a line `polygon N`, then N lines `x y z r g b a` (window
+ * coordinates and the lit color of each vertex). */
 #include <GL/gl.h>
 #include <math.h>
 #include <stdio.h>
@@ -9,9 +13,12 @@
 #include <GL/osmesa.h>
 #endif
 
-#define RINGS 8
-#define SEGMENTS 12
-#define MAX_VALUES (RINGS * SEGMENTS * 2 * 8 + 16)
+#define RINGS 16
+#define SEGMENTS 32
+#define FLOOR_TILES 12
+#define SIZE 320
+/* At most two triangles a quad, each at most 2 + 9 * 7 values after clipping (it is not). */
+#define MAX_VALUES ((RINGS * SEGMENTS + FLOOR_TILES * FLOOR_TILES) * 2 * (2 + 9 * 7))
 
 static void setup_lights(void)
 {
@@ -58,20 +65,49 @@ static void setup_material(void)
     glEnable(GL_NORMALIZE);
 }
 
+static void sphere_vertex(int ring, int segment)
+{
+    double theta = M_PI * ring / RINGS;
+    double phi = 2.0 * M_PI * segment / SEGMENTS;
+    GLfloat x = (GLfloat)(sin(theta) * cos(phi));
+    GLfloat y = (GLfloat)cos(theta);
+    GLfloat z = (GLfloat)(sin(theta) * sin(phi));
+    glColor3f(0.5f + 0.5f * x, 0.6f, 0.5f + 0.5f * z);
+    glNormal3f(2.0f * x, 2.0f * y, 2.0f * z); /* GL_NORMALIZE fixes the length */
+    glVertex3f(x, y, z);
+}
+
 static void draw_sphere(void)
 {
     int ring, segment;
-    glBegin(GL_POINTS);
     for (ring = 0; ring < RINGS; ring++) {
-        double theta = M_PI * (ring + 0.5) / RINGS;
-        for (segment = 0; segment < SEGMENTS; segment++) {
-            double phi = 2.0 * M_PI * segment / SEGMENTS;
-            GLfloat x = (GLfloat)(sin(theta) * cos(phi));
-            GLfloat y = (GLfloat)cos(theta);
-            GLfloat z = (GLfloat)(sin(theta) * sin(phi));
-            glColor3f(0.5f + 0.5f * x, 0.6f, 0.5f + 0.5f * z);
-            glNormal3f(2.0f * x, 2.0f * y, 2.0f * z); /* GL_NORMALIZE fixes the length */
-            glVertex3f(x, y, z);
+        glBegin(GL_QUAD_STRIP);
+        for (segment = 0; segment <= SEGMENTS; segment++) {
+            sphere_vertex(ring + 1, segment);
+            sphere_vertex(ring, segment);
+        }
+        glEnd();
+    }
+}
+
+/* A floor of tiles in two colors under the sphere, facing up. */
+static void draw_floor(void)
+{
+    const GLfloat extent = 3.0f, y = -1.5f, tile = 2.0f * extent / FLOOR_TILES;
+    int i, j;
+    glNormal3f(0.0f, 1.0f, 0.0f);
+    glBegin(GL_QUADS);
+    for (i = 0; i < FLOOR_TILES; i++) {
+        for (j = 0; j < FLOOR_TILES; j++) {
+            GLfloat x0 = -extent + i * tile, z0 = -extent + j * tile;
+            if ((i + j) % 2)
+                glColor3f(0.8f, 0.8f, 0.75f);
+            else
+                glColor3f(0.35f, 0.4f, 0.5f);
+            glVertex3f(x0, y, z0);
+            glVertex3f(x0, y, z0 + tile);
+            glVertex3f(x0 + tile, y, z0 + tile);
+            glVertex3f(x0 + tile, y, z0);
         }
     }
     glEnd();
@@ -82,37 +118,52 @@ int main(void)
     static GLfloat feedback[MAX_VALUES];
     GLint count, i;
 #ifdef USE_OSMESA
-    static GLubyte pixels[256 * 256 * 4];
+    static GLubyte pixels[SIZE * SIZE * 4];
     OSMesaContext osmesa = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
-    if (!osmesa || !OSMesaMakeCurrent(osmesa, pixels, GL_UNSIGNED_BYTE, 256, 256)) {
+    if (!osmesa || !OSMesaMakeCurrent(osmesa, pixels, GL_UNSIGNED_BYTE, SIZE, SIZE)) {
         fprintf(stderr, "no OSMesa context\n");
         return 1;
     }
 #endif
-    glViewport(0, 0, 256, 256);
+    glViewport(0, 0, SIZE, SIZE);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
-    glFrustum(-1.0, 1.0, -1.0, 1.0, 2.0, 10.0);
+    glFrustum(-1.0, 1.0, -1.0, 1.0, 2.0, 12.0);
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
-    glTranslatef(0.0f, 0.0f, -4.0f);
+    glTranslatef(0.0f, 0.0f, -5.0f);
     setup_lights();
-    glRotatef(30.0f, 1.0f, 0.0f, 0.0f);
-    glScalef(1.0f, 1.3f, 1.0f);
+    glRotatef(25.0f, 1.0f, 0.0f, 0.0f);
     setup_material();
+    glEnable(GL_CULL_FACE);
 
     glFeedbackBuffer(MAX_VALUES, GL_3D_COLOR, feedback);
     glRenderMode(GL_FEEDBACK);
+    draw_floor();
+    glPushMatrix();
+    glScalef(1.0f, 1.3f, 1.0f);
     draw_sphere();
+    glPopMatrix();
     count = glRenderMode(GL_RENDER);
     if (count < 0) {
         fprintf(stderr, "feedback overflowed\n");
         return 1;
     }
-    /* GL_POINT_TOKEN, x, y, z, r, g, b, a per point */
-    for (i = 0; i + 8 <= count; i += 8)
-        printf("%.2f %.2f  %.6f %.6f %.6f %.6f\n", feedback[i + 1], feedback[i + 2],
-               feedback[i + 4], feedback[i + 5], feedback[i + 6], feedback[i + 7]);
+    printf("viewport %d %d\n", SIZE, SIZE);
+    /* GL_POLYGON_TOKEN, n, then x y z r g b a for each of the n vertices */
+    for (i = 0; i < count;) {
+        GLint n, k;
+        if (feedback[i] != GL_POLYGON_TOKEN) {
+            fprintf(stderr, "unexpected feedback token %g\n", feedback[i]);
+            return 1;
+        }
+        n = (GLint)feedback[i + 1];
+        printf("polygon %d\n", (int)n);
+        for (k = 0, i += 2; k < n; k++, i += 7)
+            printf("%.9g %.9g %.9g  %.9g %.9g %.9g %.9g\n", feedback[i], feedback[i + 1],
+                   feedback[i + 2], feedback[i + 3], feedback[i + 4], feedback[i + 5],
+                   feedback[i + 6]);
+    }
     if (glGetError() != GL_NO_ERROR) {
         fprintf(stderr, "GL error\n");
         return 1;

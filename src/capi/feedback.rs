@@ -38,6 +38,7 @@ impl ApplicationFloats {
         ApplicationFloats { pointer, len }
     }
 
+    /// The application's floats, to read.
     pub fn as_slice(&self) -> &[GLfloat] {
         if self.len == 0 {
             return &[];
@@ -46,6 +47,7 @@ impl ApplicationFloats {
         unsafe { std::slice::from_raw_parts(self.pointer, self.len) }
     }
 
+    /// The application's floats, to write.
     pub fn as_mut_slice(&mut self) -> &mut [GLfloat] {
         if self.len == 0 {
             return &mut [];

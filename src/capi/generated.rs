@@ -3961,292 +3961,2329 @@ pub unsafe extern "C" fn glGetMinmaxParameteriv(target: GLenum, pname: GLenum, p
 #[allow(non_camel_case_types)]
 #[derive(Clone, Debug, PartialEq)]
 pub enum TableCommand {
-    glBegin { mode: GLenum },
+    /// glBegin, compiled into a list.
+    glBegin {
+        /// `mode`, as given.
+        mode: GLenum,
+    },
+    /// glEnd, compiled into a list.
     glEnd {},
-    glViewport { x: GLint, y: GLint, width: GLsizei, height: GLsizei },
-    glDepthRange { near: GLclampd, far: GLclampd },
-    glLightf { light: GLenum, pname: GLenum, param: GLfloat },
-    glLighti { light: GLenum, pname: GLenum, param: GLint },
-    glLightfv { light: GLenum, pname: GLenum, params: Vec<GLfloat> },
-    glLightiv { light: GLenum, pname: GLenum, params: Vec<GLint> },
-    glMaterialf { face: GLenum, pname: GLenum, param: GLfloat },
-    glMateriali { face: GLenum, pname: GLenum, param: GLint },
-    glMaterialfv { face: GLenum, pname: GLenum, params: Vec<GLfloat> },
-    glMaterialiv { face: GLenum, pname: GLenum, params: Vec<GLint> },
-    glLightModelf { pname: GLenum, param: GLfloat },
-    glLightModeli { pname: GLenum, param: GLint },
-    glLightModelfv { pname: GLenum, params: Vec<GLfloat> },
-    glLightModeliv { pname: GLenum, params: Vec<GLint> },
-    glColorMaterial { face: GLenum, mode: GLenum },
-    glEnable { cap: GLenum },
-    glDisable { cap: GLenum },
-    glMatrixMode { mode: GLenum },
+    /// glViewport, compiled into a list.
+    glViewport {
+        /// `x`, as given.
+        x: GLint,
+        /// `y`, as given.
+        y: GLint,
+        /// `width`, as given.
+        width: GLsizei,
+        /// `height`, as given.
+        height: GLsizei,
+    },
+    /// glDepthRange, compiled into a list.
+    glDepthRange {
+        /// `near`, as given.
+        near: GLclampd,
+        /// `far`, as given.
+        far: GLclampd,
+    },
+    /// glLightf, compiled into a list.
+    glLightf {
+        /// `light`, as given.
+        light: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfloat,
+    },
+    /// glLighti, compiled into a list.
+    glLighti {
+        /// `light`, as given.
+        light: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLint,
+    },
+    /// glLightfv, compiled into a list.
+    glLightfv {
+        /// `light`, as given.
+        light: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfloat>,
+    },
+    /// glLightiv, compiled into a list.
+    glLightiv {
+        /// `light`, as given.
+        light: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLint>,
+    },
+    /// glMaterialf, compiled into a list.
+    glMaterialf {
+        /// `face`, as given.
+        face: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfloat,
+    },
+    /// glMateriali, compiled into a list.
+    glMateriali {
+        /// `face`, as given.
+        face: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLint,
+    },
+    /// glMaterialfv, compiled into a list.
+    glMaterialfv {
+        /// `face`, as given.
+        face: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfloat>,
+    },
+    /// glMaterialiv, compiled into a list.
+    glMaterialiv {
+        /// `face`, as given.
+        face: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLint>,
+    },
+    /// glLightModelf, compiled into a list.
+    glLightModelf {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfloat,
+    },
+    /// glLightModeli, compiled into a list.
+    glLightModeli {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLint,
+    },
+    /// glLightModelfv, compiled into a list.
+    glLightModelfv {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfloat>,
+    },
+    /// glLightModeliv, compiled into a list.
+    glLightModeliv {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLint>,
+    },
+    /// glColorMaterial, compiled into a list.
+    glColorMaterial {
+        /// `face`, as given.
+        face: GLenum,
+        /// `mode`, as given.
+        mode: GLenum,
+    },
+    /// glEnable, compiled into a list.
+    glEnable {
+        /// `cap`, as given.
+        cap: GLenum,
+    },
+    /// glDisable, compiled into a list.
+    glDisable {
+        /// `cap`, as given.
+        cap: GLenum,
+    },
+    /// glMatrixMode, compiled into a list.
+    glMatrixMode {
+        /// `mode`, as given.
+        mode: GLenum,
+    },
+    /// glLoadIdentity, compiled into a list.
     glLoadIdentity {},
-    glLoadMatrixf { m: Vec<GLfloat> },
-    glLoadMatrixd { m: Vec<GLdouble> },
-    glMultMatrixf { m: Vec<GLfloat> },
-    glMultMatrixd { m: Vec<GLdouble> },
-    glLoadTransposeMatrixf { m: Vec<GLfloat> },
-    glLoadTransposeMatrixd { m: Vec<GLdouble> },
-    glMultTransposeMatrixf { m: Vec<GLfloat> },
-    glMultTransposeMatrixd { m: Vec<GLdouble> },
-    glTranslatef { x: GLfloat, y: GLfloat, z: GLfloat },
-    glTranslated { x: GLdouble, y: GLdouble, z: GLdouble },
-    glRotatef { angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat },
-    glRotated { angle: GLdouble, x: GLdouble, y: GLdouble, z: GLdouble },
-    glScalef { x: GLfloat, y: GLfloat, z: GLfloat },
-    glScaled { x: GLdouble, y: GLdouble, z: GLdouble },
-    glFrustum { left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble, near: GLdouble, far: GLdouble },
-    glOrtho { left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble, near: GLdouble, far: GLdouble },
+    /// glLoadMatrixf, compiled into a list.
+    glLoadMatrixf {
+        /// The values `m` pointed to at compile time.
+        m: Vec<GLfloat>,
+    },
+    /// glLoadMatrixd, compiled into a list.
+    glLoadMatrixd {
+        /// The values `m` pointed to at compile time.
+        m: Vec<GLdouble>,
+    },
+    /// glMultMatrixf, compiled into a list.
+    glMultMatrixf {
+        /// The values `m` pointed to at compile time.
+        m: Vec<GLfloat>,
+    },
+    /// glMultMatrixd, compiled into a list.
+    glMultMatrixd {
+        /// The values `m` pointed to at compile time.
+        m: Vec<GLdouble>,
+    },
+    /// glLoadTransposeMatrixf, compiled into a list.
+    glLoadTransposeMatrixf {
+        /// The values `m` pointed to at compile time.
+        m: Vec<GLfloat>,
+    },
+    /// glLoadTransposeMatrixd, compiled into a list.
+    glLoadTransposeMatrixd {
+        /// The values `m` pointed to at compile time.
+        m: Vec<GLdouble>,
+    },
+    /// glMultTransposeMatrixf, compiled into a list.
+    glMultTransposeMatrixf {
+        /// The values `m` pointed to at compile time.
+        m: Vec<GLfloat>,
+    },
+    /// glMultTransposeMatrixd, compiled into a list.
+    glMultTransposeMatrixd {
+        /// The values `m` pointed to at compile time.
+        m: Vec<GLdouble>,
+    },
+    /// glTranslatef, compiled into a list.
+    glTranslatef {
+        /// `x`, as given.
+        x: GLfloat,
+        /// `y`, as given.
+        y: GLfloat,
+        /// `z`, as given.
+        z: GLfloat,
+    },
+    /// glTranslated, compiled into a list.
+    glTranslated {
+        /// `x`, as given.
+        x: GLdouble,
+        /// `y`, as given.
+        y: GLdouble,
+        /// `z`, as given.
+        z: GLdouble,
+    },
+    /// glRotatef, compiled into a list.
+    glRotatef {
+        /// `angle`, as given.
+        angle: GLfloat,
+        /// `x`, as given.
+        x: GLfloat,
+        /// `y`, as given.
+        y: GLfloat,
+        /// `z`, as given.
+        z: GLfloat,
+    },
+    /// glRotated, compiled into a list.
+    glRotated {
+        /// `angle`, as given.
+        angle: GLdouble,
+        /// `x`, as given.
+        x: GLdouble,
+        /// `y`, as given.
+        y: GLdouble,
+        /// `z`, as given.
+        z: GLdouble,
+    },
+    /// glScalef, compiled into a list.
+    glScalef {
+        /// `x`, as given.
+        x: GLfloat,
+        /// `y`, as given.
+        y: GLfloat,
+        /// `z`, as given.
+        z: GLfloat,
+    },
+    /// glScaled, compiled into a list.
+    glScaled {
+        /// `x`, as given.
+        x: GLdouble,
+        /// `y`, as given.
+        y: GLdouble,
+        /// `z`, as given.
+        z: GLdouble,
+    },
+    /// glFrustum, compiled into a list.
+    glFrustum {
+        /// `left`, as given.
+        left: GLdouble,
+        /// `right`, as given.
+        right: GLdouble,
+        /// `bottom`, as given.
+        bottom: GLdouble,
+        /// `top`, as given.
+        top: GLdouble,
+        /// `near`, as given.
+        near: GLdouble,
+        /// `far`, as given.
+        far: GLdouble,
+    },
+    /// glOrtho, compiled into a list.
+    glOrtho {
+        /// `left`, as given.
+        left: GLdouble,
+        /// `right`, as given.
+        right: GLdouble,
+        /// `bottom`, as given.
+        bottom: GLdouble,
+        /// `top`, as given.
+        top: GLdouble,
+        /// `near`, as given.
+        near: GLdouble,
+        /// `far`, as given.
+        far: GLdouble,
+    },
+    /// glPushMatrix, compiled into a list.
     glPushMatrix {},
+    /// glPopMatrix, compiled into a list.
     glPopMatrix {},
-    glClipPlane { plane: GLenum, equation: Vec<GLdouble> },
-    glShadeModel { mode: GLenum },
-    glFrontFace { mode: GLenum },
-    glCullFace { mode: GLenum },
-    glPolygonMode { face: GLenum, mode: GLenum },
-    glRectf { x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat },
-    glRectd { x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble },
-    glRecti { x1: GLint, y1: GLint, x2: GLint, y2: GLint },
-    glRects { x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort },
+    /// glClipPlane, compiled into a list.
+    glClipPlane {
+        /// `plane`, as given.
+        plane: GLenum,
+        /// The values `equation` pointed to at compile time.
+        equation: Vec<GLdouble>,
+    },
+    /// glShadeModel, compiled into a list.
+    glShadeModel {
+        /// `mode`, as given.
+        mode: GLenum,
+    },
+    /// glFrontFace, compiled into a list.
+    glFrontFace {
+        /// `mode`, as given.
+        mode: GLenum,
+    },
+    /// glCullFace, compiled into a list.
+    glCullFace {
+        /// `mode`, as given.
+        mode: GLenum,
+    },
+    /// glPolygonMode, compiled into a list.
+    glPolygonMode {
+        /// `face`, as given.
+        face: GLenum,
+        /// `mode`, as given.
+        mode: GLenum,
+    },
+    /// glRectf, compiled into a list.
+    glRectf {
+        /// `x1`, as given.
+        x1: GLfloat,
+        /// `y1`, as given.
+        y1: GLfloat,
+        /// `x2`, as given.
+        x2: GLfloat,
+        /// `y2`, as given.
+        y2: GLfloat,
+    },
+    /// glRectd, compiled into a list.
+    glRectd {
+        /// `x1`, as given.
+        x1: GLdouble,
+        /// `y1`, as given.
+        y1: GLdouble,
+        /// `x2`, as given.
+        x2: GLdouble,
+        /// `y2`, as given.
+        y2: GLdouble,
+    },
+    /// glRecti, compiled into a list.
+    glRecti {
+        /// `x1`, as given.
+        x1: GLint,
+        /// `y1`, as given.
+        y1: GLint,
+        /// `x2`, as given.
+        x2: GLint,
+        /// `y2`, as given.
+        y2: GLint,
+    },
+    /// glRects, compiled into a list.
+    glRects {
+        /// `x1`, as given.
+        x1: GLshort,
+        /// `y1`, as given.
+        y1: GLshort,
+        /// `x2`, as given.
+        x2: GLshort,
+        /// `y2`, as given.
+        y2: GLshort,
+    },
+    /// glInitNames, compiled into a list.
     glInitNames {},
-    glPushName { name: GLuint },
+    /// glPushName, compiled into a list.
+    glPushName {
+        /// `name`, as given.
+        name: GLuint,
+    },
+    /// glPopName, compiled into a list.
     glPopName {},
-    glLoadName { name: GLuint },
-    glPassThrough { token: GLfloat },
-    glCallList { list: GLuint },
-    glListBase { base: GLuint },
-    glPointSize { size: GLfloat },
-    glPointParameterf { pname: GLenum, param: GLfloat },
-    glPointParameteri { pname: GLenum, param: GLint },
-    glPointParameterfv { pname: GLenum, params: Vec<GLfloat> },
-    glPointParameteriv { pname: GLenum, params: Vec<GLint> },
-    glLineWidth { width: GLfloat },
-    glLineStipple { factor: GLint, pattern: GLushort },
-    glPolygonOffset { factor: GLfloat, units: GLfloat },
-    glSampleCoverage { value: GLclampf, invert: GLboolean },
-    glRectsv { v1: Vec<GLshort>, v2: Vec<GLshort> },
-    glRectiv { v1: Vec<GLint>, v2: Vec<GLint> },
-    glRectfv { v1: Vec<GLfloat>, v2: Vec<GLfloat> },
-    glRectdv { v1: Vec<GLdouble>, v2: Vec<GLdouble> },
-    glFogf { pname: GLenum, param: GLfloat },
-    glFogi { pname: GLenum, param: GLint },
-    glFogfv { pname: GLenum, params: Vec<GLfloat> },
-    glFogiv { pname: GLenum, params: Vec<GLint> },
-    glHint { target: GLenum, mode: GLenum },
-    glScissor { x: GLint, y: GLint, width: GLsizei, height: GLsizei },
-    glAlphaFunc { func: GLenum, reference: GLclampf },
-    glStencilFunc { func: GLenum, reference: GLint, mask: GLuint },
-    glStencilOp { fail: GLenum, zfail: GLenum, zpass: GLenum },
-    glDepthFunc { func: GLenum },
-    glBlendFunc { sfactor: GLenum, dfactor: GLenum },
-    glBlendFuncSeparate { sfactor_rgb: GLenum, dfactor_rgb: GLenum, sfactor_alpha: GLenum, dfactor_alpha: GLenum },
-    glBlendColor { red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf },
-    glBlendEquation { mode: GLenum },
-    glLogicOp { opcode: GLenum },
-    glDrawBuffer { mode: GLenum },
-    glIndexMask { mask: GLuint },
-    glColorMask { red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean },
-    glDepthMask { flag: GLboolean },
-    glStencilMask { mask: GLuint },
-    glClear { mask: GLbitfield },
-    glClearColor { red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf },
-    glClearIndex { c: GLfloat },
-    glClearDepth { depth: GLclampd },
-    glClearStencil { s: GLint },
-    glClearAccum { red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat },
-    glAccum { op: GLenum, value: GLfloat },
-    glPixelTransferf { pname: GLenum, param: GLfloat },
-    glPixelTransferi { pname: GLenum, param: GLint },
-    glPixelMapfv { map: GLenum, mapsize: GLsizei, values: Vec<GLfloat> },
-    glPixelMapuiv { map: GLenum, mapsize: GLsizei, values: Vec<GLuint> },
-    glPixelMapusv { map: GLenum, mapsize: GLsizei, values: Vec<GLushort> },
-    glPixelZoom { xfactor: GLfloat, yfactor: GLfloat },
-    glReadBuffer { mode: GLenum },
-    glSecondaryColor3b { red: GLbyte, green: GLbyte, blue: GLbyte },
-    glSecondaryColor3bv { v: Vec<GLbyte> },
-    glSecondaryColor3s { red: GLshort, green: GLshort, blue: GLshort },
-    glSecondaryColor3sv { v: Vec<GLshort> },
-    glSecondaryColor3i { red: GLint, green: GLint, blue: GLint },
-    glSecondaryColor3iv { v: Vec<GLint> },
-    glSecondaryColor3f { red: GLfloat, green: GLfloat, blue: GLfloat },
-    glSecondaryColor3fv { v: Vec<GLfloat> },
-    glSecondaryColor3d { red: GLdouble, green: GLdouble, blue: GLdouble },
-    glSecondaryColor3dv { v: Vec<GLdouble> },
-    glSecondaryColor3ub { red: GLubyte, green: GLubyte, blue: GLubyte },
-    glSecondaryColor3ubv { v: Vec<GLubyte> },
-    glSecondaryColor3us { red: GLushort, green: GLushort, blue: GLushort },
-    glSecondaryColor3usv { v: Vec<GLushort> },
-    glSecondaryColor3ui { red: GLuint, green: GLuint, blue: GLuint },
-    glSecondaryColor3uiv { v: Vec<GLuint> },
-    glFogCoordf { coord: GLfloat },
-    glFogCoordfv { coord: Vec<GLfloat> },
-    glFogCoordd { coord: GLdouble },
-    glFogCoorddv { coord: Vec<GLdouble> },
-    glWindowPos2s { x: GLshort, y: GLshort },
-    glWindowPos2sv { v: Vec<GLshort> },
-    glWindowPos2i { x: GLint, y: GLint },
-    glWindowPos2iv { v: Vec<GLint> },
-    glWindowPos2f { x: GLfloat, y: GLfloat },
-    glWindowPos2fv { v: Vec<GLfloat> },
-    glWindowPos2d { x: GLdouble, y: GLdouble },
-    glWindowPos2dv { v: Vec<GLdouble> },
-    glWindowPos3s { x: GLshort, y: GLshort, z: GLshort },
-    glWindowPos3sv { v: Vec<GLshort> },
-    glWindowPos3i { x: GLint, y: GLint, z: GLint },
-    glWindowPos3iv { v: Vec<GLint> },
-    glWindowPos3f { x: GLfloat, y: GLfloat, z: GLfloat },
-    glWindowPos3fv { v: Vec<GLfloat> },
-    glWindowPos3d { x: GLdouble, y: GLdouble, z: GLdouble },
-    glWindowPos3dv { v: Vec<GLdouble> },
-    glBitmap { width: GLsizei, height: GLsizei, _xorig: GLfloat, _yorig: GLfloat, xmove: GLfloat, ymove: GLfloat, _bitmap: Vec<GLubyte> },
-    glCopyPixels { _x: GLint, _y: GLint, width: GLsizei, height: GLsizei, kind: GLenum },
-    glBeginQuery { target: GLenum, id: GLuint },
-    glEndQuery { target: GLenum },
-    glIndexd { c: GLdouble },
-    glIndexdv { c: Vec<GLdouble> },
-    glIndexf { c: GLfloat },
-    glIndexfv { c: Vec<GLfloat> },
-    glIndexi { c: GLint },
-    glIndexiv { c: Vec<GLint> },
-    glIndexs { c: GLshort },
-    glIndexsv { c: Vec<GLshort> },
-    glIndexub { c: GLubyte },
-    glIndexubv { c: Vec<GLubyte> },
-    glActiveTexture { texture: GLenum },
-    glBindTexture { target: GLenum, texture: GLuint },
-    glPrioritizeTextures { n: GLsizei, textures: Vec<GLuint>, priorities: Vec<GLclampf> },
-    glTexParameterf { target: GLenum, pname: GLenum, param: GLfloat },
-    glTexParameteri { target: GLenum, pname: GLenum, param: GLint },
-    glTexParameterfv { target: GLenum, pname: GLenum, params: Vec<GLfloat> },
-    glTexParameteriv { target: GLenum, pname: GLenum, params: Vec<GLint> },
-    glTexEnvf { target: GLenum, pname: GLenum, param: GLfloat },
-    glTexEnvi { target: GLenum, pname: GLenum, param: GLint },
-    glTexEnvfv { target: GLenum, pname: GLenum, params: Vec<GLfloat> },
-    glTexEnviv { target: GLenum, pname: GLenum, params: Vec<GLint> },
-    glCopyTexImage1D { target: GLenum, level: GLint, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei, border: GLint },
-    glCopyTexImage2D { target: GLenum, level: GLint, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei, border: GLint },
-    glCopyTexSubImage1D { target: GLenum, level: GLint, xoffset: GLint, _x: GLint, _y: GLint, width: GLsizei },
-    glCopyTexSubImage2D { target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei },
-    glCopyTexSubImage3D { target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei },
-    glPushAttrib { mask: GLbitfield },
+    /// glLoadName, compiled into a list.
+    glLoadName {
+        /// `name`, as given.
+        name: GLuint,
+    },
+    /// glPassThrough, compiled into a list.
+    glPassThrough {
+        /// `token`, as given.
+        token: GLfloat,
+    },
+    /// glCallList, compiled into a list.
+    glCallList {
+        /// `list`, as given.
+        list: GLuint,
+    },
+    /// glListBase, compiled into a list.
+    glListBase {
+        /// `base`, as given.
+        base: GLuint,
+    },
+    /// glPointSize, compiled into a list.
+    glPointSize {
+        /// `size`, as given.
+        size: GLfloat,
+    },
+    /// glPointParameterf, compiled into a list.
+    glPointParameterf {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfloat,
+    },
+    /// glPointParameteri, compiled into a list.
+    glPointParameteri {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLint,
+    },
+    /// glPointParameterfv, compiled into a list.
+    glPointParameterfv {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfloat>,
+    },
+    /// glPointParameteriv, compiled into a list.
+    glPointParameteriv {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLint>,
+    },
+    /// glLineWidth, compiled into a list.
+    glLineWidth {
+        /// `width`, as given.
+        width: GLfloat,
+    },
+    /// glLineStipple, compiled into a list.
+    glLineStipple {
+        /// `factor`, as given.
+        factor: GLint,
+        /// `pattern`, as given.
+        pattern: GLushort,
+    },
+    /// glPolygonOffset, compiled into a list.
+    glPolygonOffset {
+        /// `factor`, as given.
+        factor: GLfloat,
+        /// `units`, as given.
+        units: GLfloat,
+    },
+    /// glSampleCoverage, compiled into a list.
+    glSampleCoverage {
+        /// `value`, as given.
+        value: GLclampf,
+        /// `invert`, as given.
+        invert: GLboolean,
+    },
+    /// glRectsv, compiled into a list.
+    glRectsv {
+        /// The values `v1` pointed to at compile time.
+        v1: Vec<GLshort>,
+        /// The values `v2` pointed to at compile time.
+        v2: Vec<GLshort>,
+    },
+    /// glRectiv, compiled into a list.
+    glRectiv {
+        /// The values `v1` pointed to at compile time.
+        v1: Vec<GLint>,
+        /// The values `v2` pointed to at compile time.
+        v2: Vec<GLint>,
+    },
+    /// glRectfv, compiled into a list.
+    glRectfv {
+        /// The values `v1` pointed to at compile time.
+        v1: Vec<GLfloat>,
+        /// The values `v2` pointed to at compile time.
+        v2: Vec<GLfloat>,
+    },
+    /// glRectdv, compiled into a list.
+    glRectdv {
+        /// The values `v1` pointed to at compile time.
+        v1: Vec<GLdouble>,
+        /// The values `v2` pointed to at compile time.
+        v2: Vec<GLdouble>,
+    },
+    /// glFogf, compiled into a list.
+    glFogf {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfloat,
+    },
+    /// glFogi, compiled into a list.
+    glFogi {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLint,
+    },
+    /// glFogfv, compiled into a list.
+    glFogfv {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfloat>,
+    },
+    /// glFogiv, compiled into a list.
+    glFogiv {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLint>,
+    },
+    /// glHint, compiled into a list.
+    glHint {
+        /// `target`, as given.
+        target: GLenum,
+        /// `mode`, as given.
+        mode: GLenum,
+    },
+    /// glScissor, compiled into a list.
+    glScissor {
+        /// `x`, as given.
+        x: GLint,
+        /// `y`, as given.
+        y: GLint,
+        /// `width`, as given.
+        width: GLsizei,
+        /// `height`, as given.
+        height: GLsizei,
+    },
+    /// glAlphaFunc, compiled into a list.
+    glAlphaFunc {
+        /// `func`, as given.
+        func: GLenum,
+        /// `reference`, as given.
+        reference: GLclampf,
+    },
+    /// glStencilFunc, compiled into a list.
+    glStencilFunc {
+        /// `func`, as given.
+        func: GLenum,
+        /// `reference`, as given.
+        reference: GLint,
+        /// `mask`, as given.
+        mask: GLuint,
+    },
+    /// glStencilOp, compiled into a list.
+    glStencilOp {
+        /// `fail`, as given.
+        fail: GLenum,
+        /// `zfail`, as given.
+        zfail: GLenum,
+        /// `zpass`, as given.
+        zpass: GLenum,
+    },
+    /// glDepthFunc, compiled into a list.
+    glDepthFunc {
+        /// `func`, as given.
+        func: GLenum,
+    },
+    /// glBlendFunc, compiled into a list.
+    glBlendFunc {
+        /// `sfactor`, as given.
+        sfactor: GLenum,
+        /// `dfactor`, as given.
+        dfactor: GLenum,
+    },
+    /// glBlendFuncSeparate, compiled into a list.
+    glBlendFuncSeparate {
+        /// `sfactor_rgb`, as given.
+        sfactor_rgb: GLenum,
+        /// `dfactor_rgb`, as given.
+        dfactor_rgb: GLenum,
+        /// `sfactor_alpha`, as given.
+        sfactor_alpha: GLenum,
+        /// `dfactor_alpha`, as given.
+        dfactor_alpha: GLenum,
+    },
+    /// glBlendColor, compiled into a list.
+    glBlendColor {
+        /// `red`, as given.
+        red: GLclampf,
+        /// `green`, as given.
+        green: GLclampf,
+        /// `blue`, as given.
+        blue: GLclampf,
+        /// `alpha`, as given.
+        alpha: GLclampf,
+    },
+    /// glBlendEquation, compiled into a list.
+    glBlendEquation {
+        /// `mode`, as given.
+        mode: GLenum,
+    },
+    /// glLogicOp, compiled into a list.
+    glLogicOp {
+        /// `opcode`, as given.
+        opcode: GLenum,
+    },
+    /// glDrawBuffer, compiled into a list.
+    glDrawBuffer {
+        /// `mode`, as given.
+        mode: GLenum,
+    },
+    /// glIndexMask, compiled into a list.
+    glIndexMask {
+        /// `mask`, as given.
+        mask: GLuint,
+    },
+    /// glColorMask, compiled into a list.
+    glColorMask {
+        /// `red`, as given.
+        red: GLboolean,
+        /// `green`, as given.
+        green: GLboolean,
+        /// `blue`, as given.
+        blue: GLboolean,
+        /// `alpha`, as given.
+        alpha: GLboolean,
+    },
+    /// glDepthMask, compiled into a list.
+    glDepthMask {
+        /// `flag`, as given.
+        flag: GLboolean,
+    },
+    /// glStencilMask, compiled into a list.
+    glStencilMask {
+        /// `mask`, as given.
+        mask: GLuint,
+    },
+    /// glClear, compiled into a list.
+    glClear {
+        /// `mask`, as given.
+        mask: GLbitfield,
+    },
+    /// glClearColor, compiled into a list.
+    glClearColor {
+        /// `red`, as given.
+        red: GLclampf,
+        /// `green`, as given.
+        green: GLclampf,
+        /// `blue`, as given.
+        blue: GLclampf,
+        /// `alpha`, as given.
+        alpha: GLclampf,
+    },
+    /// glClearIndex, compiled into a list.
+    glClearIndex {
+        /// `c`, as given.
+        c: GLfloat,
+    },
+    /// glClearDepth, compiled into a list.
+    glClearDepth {
+        /// `depth`, as given.
+        depth: GLclampd,
+    },
+    /// glClearStencil, compiled into a list.
+    glClearStencil {
+        /// `s`, as given.
+        s: GLint,
+    },
+    /// glClearAccum, compiled into a list.
+    glClearAccum {
+        /// `red`, as given.
+        red: GLfloat,
+        /// `green`, as given.
+        green: GLfloat,
+        /// `blue`, as given.
+        blue: GLfloat,
+        /// `alpha`, as given.
+        alpha: GLfloat,
+    },
+    /// glAccum, compiled into a list.
+    glAccum {
+        /// `op`, as given.
+        op: GLenum,
+        /// `value`, as given.
+        value: GLfloat,
+    },
+    /// glPixelTransferf, compiled into a list.
+    glPixelTransferf {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfloat,
+    },
+    /// glPixelTransferi, compiled into a list.
+    glPixelTransferi {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLint,
+    },
+    /// glPixelMapfv, compiled into a list.
+    glPixelMapfv {
+        /// `map`, as given.
+        map: GLenum,
+        /// `mapsize`, as given.
+        mapsize: GLsizei,
+        /// The values `values` pointed to at compile time.
+        values: Vec<GLfloat>,
+    },
+    /// glPixelMapuiv, compiled into a list.
+    glPixelMapuiv {
+        /// `map`, as given.
+        map: GLenum,
+        /// `mapsize`, as given.
+        mapsize: GLsizei,
+        /// The values `values` pointed to at compile time.
+        values: Vec<GLuint>,
+    },
+    /// glPixelMapusv, compiled into a list.
+    glPixelMapusv {
+        /// `map`, as given.
+        map: GLenum,
+        /// `mapsize`, as given.
+        mapsize: GLsizei,
+        /// The values `values` pointed to at compile time.
+        values: Vec<GLushort>,
+    },
+    /// glPixelZoom, compiled into a list.
+    glPixelZoom {
+        /// `xfactor`, as given.
+        xfactor: GLfloat,
+        /// `yfactor`, as given.
+        yfactor: GLfloat,
+    },
+    /// glReadBuffer, compiled into a list.
+    glReadBuffer {
+        /// `mode`, as given.
+        mode: GLenum,
+    },
+    /// glSecondaryColor3b, compiled into a list.
+    glSecondaryColor3b {
+        /// `red`, as given.
+        red: GLbyte,
+        /// `green`, as given.
+        green: GLbyte,
+        /// `blue`, as given.
+        blue: GLbyte,
+    },
+    /// glSecondaryColor3bv, compiled into a list.
+    glSecondaryColor3bv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLbyte>,
+    },
+    /// glSecondaryColor3s, compiled into a list.
+    glSecondaryColor3s {
+        /// `red`, as given.
+        red: GLshort,
+        /// `green`, as given.
+        green: GLshort,
+        /// `blue`, as given.
+        blue: GLshort,
+    },
+    /// glSecondaryColor3sv, compiled into a list.
+    glSecondaryColor3sv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLshort>,
+    },
+    /// glSecondaryColor3i, compiled into a list.
+    glSecondaryColor3i {
+        /// `red`, as given.
+        red: GLint,
+        /// `green`, as given.
+        green: GLint,
+        /// `blue`, as given.
+        blue: GLint,
+    },
+    /// glSecondaryColor3iv, compiled into a list.
+    glSecondaryColor3iv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLint>,
+    },
+    /// glSecondaryColor3f, compiled into a list.
+    glSecondaryColor3f {
+        /// `red`, as given.
+        red: GLfloat,
+        /// `green`, as given.
+        green: GLfloat,
+        /// `blue`, as given.
+        blue: GLfloat,
+    },
+    /// glSecondaryColor3fv, compiled into a list.
+    glSecondaryColor3fv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLfloat>,
+    },
+    /// glSecondaryColor3d, compiled into a list.
+    glSecondaryColor3d {
+        /// `red`, as given.
+        red: GLdouble,
+        /// `green`, as given.
+        green: GLdouble,
+        /// `blue`, as given.
+        blue: GLdouble,
+    },
+    /// glSecondaryColor3dv, compiled into a list.
+    glSecondaryColor3dv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLdouble>,
+    },
+    /// glSecondaryColor3ub, compiled into a list.
+    glSecondaryColor3ub {
+        /// `red`, as given.
+        red: GLubyte,
+        /// `green`, as given.
+        green: GLubyte,
+        /// `blue`, as given.
+        blue: GLubyte,
+    },
+    /// glSecondaryColor3ubv, compiled into a list.
+    glSecondaryColor3ubv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLubyte>,
+    },
+    /// glSecondaryColor3us, compiled into a list.
+    glSecondaryColor3us {
+        /// `red`, as given.
+        red: GLushort,
+        /// `green`, as given.
+        green: GLushort,
+        /// `blue`, as given.
+        blue: GLushort,
+    },
+    /// glSecondaryColor3usv, compiled into a list.
+    glSecondaryColor3usv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLushort>,
+    },
+    /// glSecondaryColor3ui, compiled into a list.
+    glSecondaryColor3ui {
+        /// `red`, as given.
+        red: GLuint,
+        /// `green`, as given.
+        green: GLuint,
+        /// `blue`, as given.
+        blue: GLuint,
+    },
+    /// glSecondaryColor3uiv, compiled into a list.
+    glSecondaryColor3uiv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLuint>,
+    },
+    /// glFogCoordf, compiled into a list.
+    glFogCoordf {
+        /// `coord`, as given.
+        coord: GLfloat,
+    },
+    /// glFogCoordfv, compiled into a list.
+    glFogCoordfv {
+        /// The values `coord` pointed to at compile time.
+        coord: Vec<GLfloat>,
+    },
+    /// glFogCoordd, compiled into a list.
+    glFogCoordd {
+        /// `coord`, as given.
+        coord: GLdouble,
+    },
+    /// glFogCoorddv, compiled into a list.
+    glFogCoorddv {
+        /// The values `coord` pointed to at compile time.
+        coord: Vec<GLdouble>,
+    },
+    /// glWindowPos2s, compiled into a list.
+    glWindowPos2s {
+        /// `x`, as given.
+        x: GLshort,
+        /// `y`, as given.
+        y: GLshort,
+    },
+    /// glWindowPos2sv, compiled into a list.
+    glWindowPos2sv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLshort>,
+    },
+    /// glWindowPos2i, compiled into a list.
+    glWindowPos2i {
+        /// `x`, as given.
+        x: GLint,
+        /// `y`, as given.
+        y: GLint,
+    },
+    /// glWindowPos2iv, compiled into a list.
+    glWindowPos2iv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLint>,
+    },
+    /// glWindowPos2f, compiled into a list.
+    glWindowPos2f {
+        /// `x`, as given.
+        x: GLfloat,
+        /// `y`, as given.
+        y: GLfloat,
+    },
+    /// glWindowPos2fv, compiled into a list.
+    glWindowPos2fv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLfloat>,
+    },
+    /// glWindowPos2d, compiled into a list.
+    glWindowPos2d {
+        /// `x`, as given.
+        x: GLdouble,
+        /// `y`, as given.
+        y: GLdouble,
+    },
+    /// glWindowPos2dv, compiled into a list.
+    glWindowPos2dv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLdouble>,
+    },
+    /// glWindowPos3s, compiled into a list.
+    glWindowPos3s {
+        /// `x`, as given.
+        x: GLshort,
+        /// `y`, as given.
+        y: GLshort,
+        /// `z`, as given.
+        z: GLshort,
+    },
+    /// glWindowPos3sv, compiled into a list.
+    glWindowPos3sv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLshort>,
+    },
+    /// glWindowPos3i, compiled into a list.
+    glWindowPos3i {
+        /// `x`, as given.
+        x: GLint,
+        /// `y`, as given.
+        y: GLint,
+        /// `z`, as given.
+        z: GLint,
+    },
+    /// glWindowPos3iv, compiled into a list.
+    glWindowPos3iv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLint>,
+    },
+    /// glWindowPos3f, compiled into a list.
+    glWindowPos3f {
+        /// `x`, as given.
+        x: GLfloat,
+        /// `y`, as given.
+        y: GLfloat,
+        /// `z`, as given.
+        z: GLfloat,
+    },
+    /// glWindowPos3fv, compiled into a list.
+    glWindowPos3fv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLfloat>,
+    },
+    /// glWindowPos3d, compiled into a list.
+    glWindowPos3d {
+        /// `x`, as given.
+        x: GLdouble,
+        /// `y`, as given.
+        y: GLdouble,
+        /// `z`, as given.
+        z: GLdouble,
+    },
+    /// glWindowPos3dv, compiled into a list.
+    glWindowPos3dv {
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLdouble>,
+    },
+    /// glBitmap, compiled into a list.
+    glBitmap {
+        /// `width`, as given.
+        width: GLsizei,
+        /// `height`, as given.
+        height: GLsizei,
+        /// `_xorig`, as given.
+        _xorig: GLfloat,
+        /// `_yorig`, as given.
+        _yorig: GLfloat,
+        /// `xmove`, as given.
+        xmove: GLfloat,
+        /// `ymove`, as given.
+        ymove: GLfloat,
+        /// The values `_bitmap` pointed to at compile time.
+        _bitmap: Vec<GLubyte>,
+    },
+    /// glCopyPixels, compiled into a list.
+    glCopyPixels {
+        /// `_x`, as given.
+        _x: GLint,
+        /// `_y`, as given.
+        _y: GLint,
+        /// `width`, as given.
+        width: GLsizei,
+        /// `height`, as given.
+        height: GLsizei,
+        /// `kind`, as given.
+        kind: GLenum,
+    },
+    /// glBeginQuery, compiled into a list.
+    glBeginQuery {
+        /// `target`, as given.
+        target: GLenum,
+        /// `id`, as given.
+        id: GLuint,
+    },
+    /// glEndQuery, compiled into a list.
+    glEndQuery {
+        /// `target`, as given.
+        target: GLenum,
+    },
+    /// glIndexd, compiled into a list.
+    glIndexd {
+        /// `c`, as given.
+        c: GLdouble,
+    },
+    /// glIndexdv, compiled into a list.
+    glIndexdv {
+        /// The values `c` pointed to at compile time.
+        c: Vec<GLdouble>,
+    },
+    /// glIndexf, compiled into a list.
+    glIndexf {
+        /// `c`, as given.
+        c: GLfloat,
+    },
+    /// glIndexfv, compiled into a list.
+    glIndexfv {
+        /// The values `c` pointed to at compile time.
+        c: Vec<GLfloat>,
+    },
+    /// glIndexi, compiled into a list.
+    glIndexi {
+        /// `c`, as given.
+        c: GLint,
+    },
+    /// glIndexiv, compiled into a list.
+    glIndexiv {
+        /// The values `c` pointed to at compile time.
+        c: Vec<GLint>,
+    },
+    /// glIndexs, compiled into a list.
+    glIndexs {
+        /// `c`, as given.
+        c: GLshort,
+    },
+    /// glIndexsv, compiled into a list.
+    glIndexsv {
+        /// The values `c` pointed to at compile time.
+        c: Vec<GLshort>,
+    },
+    /// glIndexub, compiled into a list.
+    glIndexub {
+        /// `c`, as given.
+        c: GLubyte,
+    },
+    /// glIndexubv, compiled into a list.
+    glIndexubv {
+        /// The values `c` pointed to at compile time.
+        c: Vec<GLubyte>,
+    },
+    /// glActiveTexture, compiled into a list.
+    glActiveTexture {
+        /// `texture`, as given.
+        texture: GLenum,
+    },
+    /// glBindTexture, compiled into a list.
+    glBindTexture {
+        /// `target`, as given.
+        target: GLenum,
+        /// `texture`, as given.
+        texture: GLuint,
+    },
+    /// glPrioritizeTextures, compiled into a list.
+    glPrioritizeTextures {
+        /// `n`, as given.
+        n: GLsizei,
+        /// The values `textures` pointed to at compile time.
+        textures: Vec<GLuint>,
+        /// The values `priorities` pointed to at compile time.
+        priorities: Vec<GLclampf>,
+    },
+    /// glTexParameterf, compiled into a list.
+    glTexParameterf {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfloat,
+    },
+    /// glTexParameteri, compiled into a list.
+    glTexParameteri {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLint,
+    },
+    /// glTexParameterfv, compiled into a list.
+    glTexParameterfv {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfloat>,
+    },
+    /// glTexParameteriv, compiled into a list.
+    glTexParameteriv {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLint>,
+    },
+    /// glTexEnvf, compiled into a list.
+    glTexEnvf {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfloat,
+    },
+    /// glTexEnvi, compiled into a list.
+    glTexEnvi {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLint,
+    },
+    /// glTexEnvfv, compiled into a list.
+    glTexEnvfv {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfloat>,
+    },
+    /// glTexEnviv, compiled into a list.
+    glTexEnviv {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLint>,
+    },
+    /// glCopyTexImage1D, compiled into a list.
+    glCopyTexImage1D {
+        /// `target`, as given.
+        target: GLenum,
+        /// `level`, as given.
+        level: GLint,
+        /// `internalformat`, as given.
+        internalformat: GLenum,
+        /// `_x`, as given.
+        _x: GLint,
+        /// `_y`, as given.
+        _y: GLint,
+        /// `width`, as given.
+        width: GLsizei,
+        /// `border`, as given.
+        border: GLint,
+    },
+    /// glCopyTexImage2D, compiled into a list.
+    glCopyTexImage2D {
+        /// `target`, as given.
+        target: GLenum,
+        /// `level`, as given.
+        level: GLint,
+        /// `internalformat`, as given.
+        internalformat: GLenum,
+        /// `_x`, as given.
+        _x: GLint,
+        /// `_y`, as given.
+        _y: GLint,
+        /// `width`, as given.
+        width: GLsizei,
+        /// `height`, as given.
+        height: GLsizei,
+        /// `border`, as given.
+        border: GLint,
+    },
+    /// glCopyTexSubImage1D, compiled into a list.
+    glCopyTexSubImage1D {
+        /// `target`, as given.
+        target: GLenum,
+        /// `level`, as given.
+        level: GLint,
+        /// `xoffset`, as given.
+        xoffset: GLint,
+        /// `_x`, as given.
+        _x: GLint,
+        /// `_y`, as given.
+        _y: GLint,
+        /// `width`, as given.
+        width: GLsizei,
+    },
+    /// glCopyTexSubImage2D, compiled into a list.
+    glCopyTexSubImage2D {
+        /// `target`, as given.
+        target: GLenum,
+        /// `level`, as given.
+        level: GLint,
+        /// `xoffset`, as given.
+        xoffset: GLint,
+        /// `yoffset`, as given.
+        yoffset: GLint,
+        /// `_x`, as given.
+        _x: GLint,
+        /// `_y`, as given.
+        _y: GLint,
+        /// `width`, as given.
+        width: GLsizei,
+        /// `height`, as given.
+        height: GLsizei,
+    },
+    /// glCopyTexSubImage3D, compiled into a list.
+    glCopyTexSubImage3D {
+        /// `target`, as given.
+        target: GLenum,
+        /// `level`, as given.
+        level: GLint,
+        /// `xoffset`, as given.
+        xoffset: GLint,
+        /// `yoffset`, as given.
+        yoffset: GLint,
+        /// `zoffset`, as given.
+        zoffset: GLint,
+        /// `_x`, as given.
+        _x: GLint,
+        /// `_y`, as given.
+        _y: GLint,
+        /// `width`, as given.
+        width: GLsizei,
+        /// `height`, as given.
+        height: GLsizei,
+    },
+    /// glPushAttrib, compiled into a list.
+    glPushAttrib {
+        /// `mask`, as given.
+        mask: GLbitfield,
+    },
+    /// glPopAttrib, compiled into a list.
     glPopAttrib {},
-    glTexGeni { coord: GLenum, pname: GLenum, param: GLint },
-    glTexGeniv { coord: GLenum, pname: GLenum, params: Vec<GLint> },
-    glTexGenf { coord: GLenum, pname: GLenum, param: GLfloat },
-    glTexGenfv { coord: GLenum, pname: GLenum, params: Vec<GLfloat> },
-    glTexGend { coord: GLenum, pname: GLenum, param: GLdouble },
-    glTexGendv { coord: GLenum, pname: GLenum, params: Vec<GLdouble> },
-    glMultiTexCoord1s { target: GLenum, s: GLshort },
-    glMultiTexCoord1sv { target: GLenum, v: Vec<GLshort> },
-    glMultiTexCoord1i { target: GLenum, s: GLint },
-    glMultiTexCoord1iv { target: GLenum, v: Vec<GLint> },
-    glMultiTexCoord1f { target: GLenum, s: GLfloat },
-    glMultiTexCoord1fv { target: GLenum, v: Vec<GLfloat> },
-    glMultiTexCoord1d { target: GLenum, s: GLdouble },
-    glMultiTexCoord1dv { target: GLenum, v: Vec<GLdouble> },
-    glMultiTexCoord2s { target: GLenum, s: GLshort, t: GLshort },
-    glMultiTexCoord2sv { target: GLenum, v: Vec<GLshort> },
-    glMultiTexCoord2i { target: GLenum, s: GLint, t: GLint },
-    glMultiTexCoord2iv { target: GLenum, v: Vec<GLint> },
-    glMultiTexCoord2f { target: GLenum, s: GLfloat, t: GLfloat },
-    glMultiTexCoord2fv { target: GLenum, v: Vec<GLfloat> },
-    glMultiTexCoord2d { target: GLenum, s: GLdouble, t: GLdouble },
-    glMultiTexCoord2dv { target: GLenum, v: Vec<GLdouble> },
-    glMultiTexCoord3s { target: GLenum, s: GLshort, t: GLshort, r: GLshort },
-    glMultiTexCoord3sv { target: GLenum, v: Vec<GLshort> },
-    glMultiTexCoord3i { target: GLenum, s: GLint, t: GLint, r: GLint },
-    glMultiTexCoord3iv { target: GLenum, v: Vec<GLint> },
-    glMultiTexCoord3f { target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat },
-    glMultiTexCoord3fv { target: GLenum, v: Vec<GLfloat> },
-    glMultiTexCoord3d { target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble },
-    glMultiTexCoord3dv { target: GLenum, v: Vec<GLdouble> },
-    glMultiTexCoord4s { target: GLenum, s: GLshort, t: GLshort, r: GLshort, q: GLshort },
-    glMultiTexCoord4sv { target: GLenum, v: Vec<GLshort> },
-    glMultiTexCoord4i { target: GLenum, s: GLint, t: GLint, r: GLint, q: GLint },
-    glMultiTexCoord4iv { target: GLenum, v: Vec<GLint> },
-    glMultiTexCoord4f { target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat },
-    glMultiTexCoord4fv { target: GLenum, v: Vec<GLfloat> },
-    glMultiTexCoord4d { target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble },
-    glMultiTexCoord4dv { target: GLenum, v: Vec<GLdouble> },
-    glDrawPixels { width: GLsizei, height: GLsizei, format: GLenum, ty: GLenum, _pixels: Vec<u8> },
-    glMap1f { target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: Vec<GLfloat> },
-    glMap2f { target: GLenum, u1: GLfloat, u2: GLfloat, ustride: GLint, uorder: GLint, v1: GLfloat, v2: GLfloat, vstride: GLint, vorder: GLint, points: Vec<GLfloat> },
-    glMap1d { target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: Vec<GLdouble> },
-    glMap2d { target: GLenum, u1: GLdouble, u2: GLdouble, ustride: GLint, uorder: GLint, v1: GLdouble, v2: GLdouble, vstride: GLint, vorder: GLint, points: Vec<GLdouble> },
-    glMapGrid1f { un: GLint, u1: GLfloat, u2: GLfloat },
-    glMapGrid2f { un: GLint, u1: GLfloat, u2: GLfloat, vn: GLint, v1: GLfloat, v2: GLfloat },
-    glMapGrid1d { un: GLint, u1: GLdouble, u2: GLdouble },
-    glMapGrid2d { un: GLint, u1: GLdouble, u2: GLdouble, vn: GLint, v1: GLdouble, v2: GLdouble },
-    glEvalCoord1f { u: GLfloat },
-    glEvalCoord1fv { u: Vec<GLfloat> },
-    glEvalCoord2f { u: GLfloat, v: GLfloat },
-    glEvalCoord2fv { u: Vec<GLfloat> },
-    glEvalCoord1d { u: GLdouble },
-    glEvalCoord1dv { u: Vec<GLdouble> },
-    glEvalCoord2d { u: GLdouble, v: GLdouble },
-    glEvalCoord2dv { u: Vec<GLdouble> },
-    glEvalPoint1 { i: GLint },
-    glEvalPoint2 { i: GLint, j: GLint },
-    glEvalMesh1 { mode: GLenum, i1: GLint, i2: GLint },
-    glEvalMesh2 { mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint },
-    glLightx { light: GLenum, pname: GLenum, param: GLfixed },
-    glLightxv { light: GLenum, pname: GLenum, params: Vec<GLfixed> },
-    glMaterialx { face: GLenum, pname: GLenum, param: GLfixed },
-    glMaterialxv { face: GLenum, pname: GLenum, params: Vec<GLfixed> },
-    glLightModelx { pname: GLenum, param: GLfixed },
-    glLightModelxv { pname: GLenum, params: Vec<GLfixed> },
-    glNormal3x { nx: GLfixed, ny: GLfixed, nz: GLfixed },
-    glColor4x { red: GLfixed, green: GLfixed, blue: GLfixed, alpha: GLfixed },
-    glMultiTexCoord4x { target: GLenum, s: GLfixed, t: GLfixed, r: GLfixed, q: GLfixed },
-    glTranslatex { x: GLfixed, y: GLfixed, z: GLfixed },
-    glRotatex { angle: GLfixed, x: GLfixed, y: GLfixed, z: GLfixed },
-    glScalex { x: GLfixed, y: GLfixed, z: GLfixed },
-    glLoadMatrixx { m: Vec<GLfixed> },
-    glMultMatrixx { m: Vec<GLfixed> },
-    glOrthox { left: GLfixed, right: GLfixed, bottom: GLfixed, top: GLfixed, near: GLfixed, far: GLfixed },
-    glFrustumx { left: GLfixed, right: GLfixed, bottom: GLfixed, top: GLfixed, near: GLfixed, far: GLfixed },
-    glOrthof { left: GLfloat, right: GLfloat, bottom: GLfloat, top: GLfloat, near: GLfloat, far: GLfloat },
-    glFrustumf { left: GLfloat, right: GLfloat, bottom: GLfloat, top: GLfloat, near: GLfloat, far: GLfloat },
-    glClipPlanex { plane: GLenum, equation: Vec<GLfixed> },
-    glClipPlanef { plane: GLenum, equation: Vec<GLfloat> },
-    glPointSizex { size: GLfixed },
-    glPointParameterx { pname: GLenum, param: GLfixed },
-    glPointParameterxv { pname: GLenum, params: Vec<GLfixed> },
-    glLineWidthx { width: GLfixed },
-    glFogx { pname: GLenum, param: GLfixed },
-    glFogxv { pname: GLenum, params: Vec<GLfixed> },
-    glTexEnvx { target: GLenum, pname: GLenum, param: GLfixed },
-    glTexEnvxv { target: GLenum, pname: GLenum, params: Vec<GLfixed> },
-    glTexParameterx { target: GLenum, pname: GLenum, param: GLfixed },
-    glTexParameterxv { target: GLenum, pname: GLenum, params: Vec<GLfixed> },
-    glClearColorx { red: GLclampx, green: GLclampx, blue: GLclampx, alpha: GLclampx },
-    glClearDepthx { depth: GLclampx },
-    glClearDepthf { depth: GLclampf },
-    glDepthRangex { near: GLclampx, far: GLclampx },
-    glDepthRangef { near: GLclampf, far: GLclampf },
-    glAlphaFuncx { func: GLenum, reference: GLclampx },
-    glPolygonOffsetx { factor: GLfixed, units: GLfixed },
-    glSampleCoveragex { value: GLclampx, invert: GLboolean },
-    glColorTable { target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, ty: GLenum, table: Vec<u8> },
-    glColorSubTable { target: GLenum, start: GLsizei, count: GLsizei, format: GLenum, ty: GLenum, data: Vec<u8> },
-    glColorTableParameterfv { target: GLenum, pname: GLenum, params: Vec<GLfloat> },
-    glColorTableParameteriv { target: GLenum, pname: GLenum, params: Vec<GLint> },
-    glCopyColorTable { target: GLenum, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei },
-    glCopyColorSubTable { target: GLenum, start: GLsizei, _x: GLint, _y: GLint, width: GLsizei },
-    glConvolutionFilter1D { target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, ty: GLenum, image: Vec<u8> },
-    glConvolutionFilter2D { target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei, format: GLenum, ty: GLenum, image: Vec<u8> },
-    glSeparableFilter2D { target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei, format: GLenum, ty: GLenum, row: Vec<u8>, column: Vec<u8> },
-    glCopyConvolutionFilter1D { target: GLenum, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei },
-    glCopyConvolutionFilter2D { target: GLenum, internalformat: GLenum, _x: GLint, _y: GLint, width: GLsizei, height: GLsizei },
-    glConvolutionParameterf { target: GLenum, pname: GLenum, param: GLfloat },
-    glConvolutionParameteri { target: GLenum, pname: GLenum, param: GLint },
-    glConvolutionParameterfv { target: GLenum, pname: GLenum, params: Vec<GLfloat> },
-    glConvolutionParameteriv { target: GLenum, pname: GLenum, params: Vec<GLint> },
-    glHistogram { target: GLenum, width: GLsizei, internalformat: GLenum, sink: GLboolean },
-    glResetHistogram { target: GLenum },
-    glMinmax { target: GLenum, internalformat: GLenum, sink: GLboolean },
-    glResetMinmax { target: GLenum },
+    /// glTexGeni, compiled into a list.
+    glTexGeni {
+        /// `coord`, as given.
+        coord: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLint,
+    },
+    /// glTexGeniv, compiled into a list.
+    glTexGeniv {
+        /// `coord`, as given.
+        coord: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLint>,
+    },
+    /// glTexGenf, compiled into a list.
+    glTexGenf {
+        /// `coord`, as given.
+        coord: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfloat,
+    },
+    /// glTexGenfv, compiled into a list.
+    glTexGenfv {
+        /// `coord`, as given.
+        coord: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfloat>,
+    },
+    /// glTexGend, compiled into a list.
+    glTexGend {
+        /// `coord`, as given.
+        coord: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLdouble,
+    },
+    /// glTexGendv, compiled into a list.
+    glTexGendv {
+        /// `coord`, as given.
+        coord: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLdouble>,
+    },
+    /// glMultiTexCoord1s, compiled into a list.
+    glMultiTexCoord1s {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLshort,
+    },
+    /// glMultiTexCoord1sv, compiled into a list.
+    glMultiTexCoord1sv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLshort>,
+    },
+    /// glMultiTexCoord1i, compiled into a list.
+    glMultiTexCoord1i {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLint,
+    },
+    /// glMultiTexCoord1iv, compiled into a list.
+    glMultiTexCoord1iv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLint>,
+    },
+    /// glMultiTexCoord1f, compiled into a list.
+    glMultiTexCoord1f {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLfloat,
+    },
+    /// glMultiTexCoord1fv, compiled into a list.
+    glMultiTexCoord1fv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLfloat>,
+    },
+    /// glMultiTexCoord1d, compiled into a list.
+    glMultiTexCoord1d {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLdouble,
+    },
+    /// glMultiTexCoord1dv, compiled into a list.
+    glMultiTexCoord1dv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLdouble>,
+    },
+    /// glMultiTexCoord2s, compiled into a list.
+    glMultiTexCoord2s {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLshort,
+        /// `t`, as given.
+        t: GLshort,
+    },
+    /// glMultiTexCoord2sv, compiled into a list.
+    glMultiTexCoord2sv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLshort>,
+    },
+    /// glMultiTexCoord2i, compiled into a list.
+    glMultiTexCoord2i {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLint,
+        /// `t`, as given.
+        t: GLint,
+    },
+    /// glMultiTexCoord2iv, compiled into a list.
+    glMultiTexCoord2iv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLint>,
+    },
+    /// glMultiTexCoord2f, compiled into a list.
+    glMultiTexCoord2f {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLfloat,
+        /// `t`, as given.
+        t: GLfloat,
+    },
+    /// glMultiTexCoord2fv, compiled into a list.
+    glMultiTexCoord2fv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLfloat>,
+    },
+    /// glMultiTexCoord2d, compiled into a list.
+    glMultiTexCoord2d {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLdouble,
+        /// `t`, as given.
+        t: GLdouble,
+    },
+    /// glMultiTexCoord2dv, compiled into a list.
+    glMultiTexCoord2dv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLdouble>,
+    },
+    /// glMultiTexCoord3s, compiled into a list.
+    glMultiTexCoord3s {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLshort,
+        /// `t`, as given.
+        t: GLshort,
+        /// `r`, as given.
+        r: GLshort,
+    },
+    /// glMultiTexCoord3sv, compiled into a list.
+    glMultiTexCoord3sv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLshort>,
+    },
+    /// glMultiTexCoord3i, compiled into a list.
+    glMultiTexCoord3i {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLint,
+        /// `t`, as given.
+        t: GLint,
+        /// `r`, as given.
+        r: GLint,
+    },
+    /// glMultiTexCoord3iv, compiled into a list.
+    glMultiTexCoord3iv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLint>,
+    },
+    /// glMultiTexCoord3f, compiled into a list.
+    glMultiTexCoord3f {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLfloat,
+        /// `t`, as given.
+        t: GLfloat,
+        /// `r`, as given.
+        r: GLfloat,
+    },
+    /// glMultiTexCoord3fv, compiled into a list.
+    glMultiTexCoord3fv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLfloat>,
+    },
+    /// glMultiTexCoord3d, compiled into a list.
+    glMultiTexCoord3d {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLdouble,
+        /// `t`, as given.
+        t: GLdouble,
+        /// `r`, as given.
+        r: GLdouble,
+    },
+    /// glMultiTexCoord3dv, compiled into a list.
+    glMultiTexCoord3dv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLdouble>,
+    },
+    /// glMultiTexCoord4s, compiled into a list.
+    glMultiTexCoord4s {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLshort,
+        /// `t`, as given.
+        t: GLshort,
+        /// `r`, as given.
+        r: GLshort,
+        /// `q`, as given.
+        q: GLshort,
+    },
+    /// glMultiTexCoord4sv, compiled into a list.
+    glMultiTexCoord4sv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLshort>,
+    },
+    /// glMultiTexCoord4i, compiled into a list.
+    glMultiTexCoord4i {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLint,
+        /// `t`, as given.
+        t: GLint,
+        /// `r`, as given.
+        r: GLint,
+        /// `q`, as given.
+        q: GLint,
+    },
+    /// glMultiTexCoord4iv, compiled into a list.
+    glMultiTexCoord4iv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLint>,
+    },
+    /// glMultiTexCoord4f, compiled into a list.
+    glMultiTexCoord4f {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLfloat,
+        /// `t`, as given.
+        t: GLfloat,
+        /// `r`, as given.
+        r: GLfloat,
+        /// `q`, as given.
+        q: GLfloat,
+    },
+    /// glMultiTexCoord4fv, compiled into a list.
+    glMultiTexCoord4fv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLfloat>,
+    },
+    /// glMultiTexCoord4d, compiled into a list.
+    glMultiTexCoord4d {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLdouble,
+        /// `t`, as given.
+        t: GLdouble,
+        /// `r`, as given.
+        r: GLdouble,
+        /// `q`, as given.
+        q: GLdouble,
+    },
+    /// glMultiTexCoord4dv, compiled into a list.
+    glMultiTexCoord4dv {
+        /// `target`, as given.
+        target: GLenum,
+        /// The values `v` pointed to at compile time.
+        v: Vec<GLdouble>,
+    },
+    /// glDrawPixels, compiled into a list.
+    glDrawPixels {
+        /// `width`, as given.
+        width: GLsizei,
+        /// `height`, as given.
+        height: GLsizei,
+        /// `format`, as given.
+        format: GLenum,
+        /// `ty`, as given.
+        ty: GLenum,
+        /// The values `_pixels` pointed to at compile time.
+        _pixels: Vec<u8>,
+    },
+    /// glMap1f, compiled into a list.
+    glMap1f {
+        /// `target`, as given.
+        target: GLenum,
+        /// `u1`, as given.
+        u1: GLfloat,
+        /// `u2`, as given.
+        u2: GLfloat,
+        /// `stride`, as given.
+        stride: GLint,
+        /// `order`, as given.
+        order: GLint,
+        /// The values `points` pointed to at compile time.
+        points: Vec<GLfloat>,
+    },
+    /// glMap2f, compiled into a list.
+    glMap2f {
+        /// `target`, as given.
+        target: GLenum,
+        /// `u1`, as given.
+        u1: GLfloat,
+        /// `u2`, as given.
+        u2: GLfloat,
+        /// `ustride`, as given.
+        ustride: GLint,
+        /// `uorder`, as given.
+        uorder: GLint,
+        /// `v1`, as given.
+        v1: GLfloat,
+        /// `v2`, as given.
+        v2: GLfloat,
+        /// `vstride`, as given.
+        vstride: GLint,
+        /// `vorder`, as given.
+        vorder: GLint,
+        /// The values `points` pointed to at compile time.
+        points: Vec<GLfloat>,
+    },
+    /// glMap1d, compiled into a list.
+    glMap1d {
+        /// `target`, as given.
+        target: GLenum,
+        /// `u1`, as given.
+        u1: GLdouble,
+        /// `u2`, as given.
+        u2: GLdouble,
+        /// `stride`, as given.
+        stride: GLint,
+        /// `order`, as given.
+        order: GLint,
+        /// The values `points` pointed to at compile time.
+        points: Vec<GLdouble>,
+    },
+    /// glMap2d, compiled into a list.
+    glMap2d {
+        /// `target`, as given.
+        target: GLenum,
+        /// `u1`, as given.
+        u1: GLdouble,
+        /// `u2`, as given.
+        u2: GLdouble,
+        /// `ustride`, as given.
+        ustride: GLint,
+        /// `uorder`, as given.
+        uorder: GLint,
+        /// `v1`, as given.
+        v1: GLdouble,
+        /// `v2`, as given.
+        v2: GLdouble,
+        /// `vstride`, as given.
+        vstride: GLint,
+        /// `vorder`, as given.
+        vorder: GLint,
+        /// The values `points` pointed to at compile time.
+        points: Vec<GLdouble>,
+    },
+    /// glMapGrid1f, compiled into a list.
+    glMapGrid1f {
+        /// `un`, as given.
+        un: GLint,
+        /// `u1`, as given.
+        u1: GLfloat,
+        /// `u2`, as given.
+        u2: GLfloat,
+    },
+    /// glMapGrid2f, compiled into a list.
+    glMapGrid2f {
+        /// `un`, as given.
+        un: GLint,
+        /// `u1`, as given.
+        u1: GLfloat,
+        /// `u2`, as given.
+        u2: GLfloat,
+        /// `vn`, as given.
+        vn: GLint,
+        /// `v1`, as given.
+        v1: GLfloat,
+        /// `v2`, as given.
+        v2: GLfloat,
+    },
+    /// glMapGrid1d, compiled into a list.
+    glMapGrid1d {
+        /// `un`, as given.
+        un: GLint,
+        /// `u1`, as given.
+        u1: GLdouble,
+        /// `u2`, as given.
+        u2: GLdouble,
+    },
+    /// glMapGrid2d, compiled into a list.
+    glMapGrid2d {
+        /// `un`, as given.
+        un: GLint,
+        /// `u1`, as given.
+        u1: GLdouble,
+        /// `u2`, as given.
+        u2: GLdouble,
+        /// `vn`, as given.
+        vn: GLint,
+        /// `v1`, as given.
+        v1: GLdouble,
+        /// `v2`, as given.
+        v2: GLdouble,
+    },
+    /// glEvalCoord1f, compiled into a list.
+    glEvalCoord1f {
+        /// `u`, as given.
+        u: GLfloat,
+    },
+    /// glEvalCoord1fv, compiled into a list.
+    glEvalCoord1fv {
+        /// The values `u` pointed to at compile time.
+        u: Vec<GLfloat>,
+    },
+    /// glEvalCoord2f, compiled into a list.
+    glEvalCoord2f {
+        /// `u`, as given.
+        u: GLfloat,
+        /// `v`, as given.
+        v: GLfloat,
+    },
+    /// glEvalCoord2fv, compiled into a list.
+    glEvalCoord2fv {
+        /// The values `u` pointed to at compile time.
+        u: Vec<GLfloat>,
+    },
+    /// glEvalCoord1d, compiled into a list.
+    glEvalCoord1d {
+        /// `u`, as given.
+        u: GLdouble,
+    },
+    /// glEvalCoord1dv, compiled into a list.
+    glEvalCoord1dv {
+        /// The values `u` pointed to at compile time.
+        u: Vec<GLdouble>,
+    },
+    /// glEvalCoord2d, compiled into a list.
+    glEvalCoord2d {
+        /// `u`, as given.
+        u: GLdouble,
+        /// `v`, as given.
+        v: GLdouble,
+    },
+    /// glEvalCoord2dv, compiled into a list.
+    glEvalCoord2dv {
+        /// The values `u` pointed to at compile time.
+        u: Vec<GLdouble>,
+    },
+    /// glEvalPoint1, compiled into a list.
+    glEvalPoint1 {
+        /// `i`, as given.
+        i: GLint,
+    },
+    /// glEvalPoint2, compiled into a list.
+    glEvalPoint2 {
+        /// `i`, as given.
+        i: GLint,
+        /// `j`, as given.
+        j: GLint,
+    },
+    /// glEvalMesh1, compiled into a list.
+    glEvalMesh1 {
+        /// `mode`, as given.
+        mode: GLenum,
+        /// `i1`, as given.
+        i1: GLint,
+        /// `i2`, as given.
+        i2: GLint,
+    },
+    /// glEvalMesh2, compiled into a list.
+    glEvalMesh2 {
+        /// `mode`, as given.
+        mode: GLenum,
+        /// `i1`, as given.
+        i1: GLint,
+        /// `i2`, as given.
+        i2: GLint,
+        /// `j1`, as given.
+        j1: GLint,
+        /// `j2`, as given.
+        j2: GLint,
+    },
+    /// glLightx, compiled into a list.
+    glLightx {
+        /// `light`, as given.
+        light: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfixed,
+    },
+    /// glLightxv, compiled into a list.
+    glLightxv {
+        /// `light`, as given.
+        light: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfixed>,
+    },
+    /// glMaterialx, compiled into a list.
+    glMaterialx {
+        /// `face`, as given.
+        face: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfixed,
+    },
+    /// glMaterialxv, compiled into a list.
+    glMaterialxv {
+        /// `face`, as given.
+        face: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfixed>,
+    },
+    /// glLightModelx, compiled into a list.
+    glLightModelx {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfixed,
+    },
+    /// glLightModelxv, compiled into a list.
+    glLightModelxv {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfixed>,
+    },
+    /// glNormal3x, compiled into a list.
+    glNormal3x {
+        /// `nx`, as given.
+        nx: GLfixed,
+        /// `ny`, as given.
+        ny: GLfixed,
+        /// `nz`, as given.
+        nz: GLfixed,
+    },
+    /// glColor4x, compiled into a list.
+    glColor4x {
+        /// `red`, as given.
+        red: GLfixed,
+        /// `green`, as given.
+        green: GLfixed,
+        /// `blue`, as given.
+        blue: GLfixed,
+        /// `alpha`, as given.
+        alpha: GLfixed,
+    },
+    /// glMultiTexCoord4x, compiled into a list.
+    glMultiTexCoord4x {
+        /// `target`, as given.
+        target: GLenum,
+        /// `s`, as given.
+        s: GLfixed,
+        /// `t`, as given.
+        t: GLfixed,
+        /// `r`, as given.
+        r: GLfixed,
+        /// `q`, as given.
+        q: GLfixed,
+    },
+    /// glTranslatex, compiled into a list.
+    glTranslatex {
+        /// `x`, as given.
+        x: GLfixed,
+        /// `y`, as given.
+        y: GLfixed,
+        /// `z`, as given.
+        z: GLfixed,
+    },
+    /// glRotatex, compiled into a list.
+    glRotatex {
+        /// `angle`, as given.
+        angle: GLfixed,
+        /// `x`, as given.
+        x: GLfixed,
+        /// `y`, as given.
+        y: GLfixed,
+        /// `z`, as given.
+        z: GLfixed,
+    },
+    /// glScalex, compiled into a list.
+    glScalex {
+        /// `x`, as given.
+        x: GLfixed,
+        /// `y`, as given.
+        y: GLfixed,
+        /// `z`, as given.
+        z: GLfixed,
+    },
+    /// glLoadMatrixx, compiled into a list.
+    glLoadMatrixx {
+        /// The values `m` pointed to at compile time.
+        m: Vec<GLfixed>,
+    },
+    /// glMultMatrixx, compiled into a list.
+    glMultMatrixx {
+        /// The values `m` pointed to at compile time.
+        m: Vec<GLfixed>,
+    },
+    /// glOrthox, compiled into a list.
+    glOrthox {
+        /// `left`, as given.
+        left: GLfixed,
+        /// `right`, as given.
+        right: GLfixed,
+        /// `bottom`, as given.
+        bottom: GLfixed,
+        /// `top`, as given.
+        top: GLfixed,
+        /// `near`, as given.
+        near: GLfixed,
+        /// `far`, as given.
+        far: GLfixed,
+    },
+    /// glFrustumx, compiled into a list.
+    glFrustumx {
+        /// `left`, as given.
+        left: GLfixed,
+        /// `right`, as given.
+        right: GLfixed,
+        /// `bottom`, as given.
+        bottom: GLfixed,
+        /// `top`, as given.
+        top: GLfixed,
+        /// `near`, as given.
+        near: GLfixed,
+        /// `far`, as given.
+        far: GLfixed,
+    },
+    /// glOrthof, compiled into a list.
+    glOrthof {
+        /// `left`, as given.
+        left: GLfloat,
+        /// `right`, as given.
+        right: GLfloat,
+        /// `bottom`, as given.
+        bottom: GLfloat,
+        /// `top`, as given.
+        top: GLfloat,
+        /// `near`, as given.
+        near: GLfloat,
+        /// `far`, as given.
+        far: GLfloat,
+    },
+    /// glFrustumf, compiled into a list.
+    glFrustumf {
+        /// `left`, as given.
+        left: GLfloat,
+        /// `right`, as given.
+        right: GLfloat,
+        /// `bottom`, as given.
+        bottom: GLfloat,
+        /// `top`, as given.
+        top: GLfloat,
+        /// `near`, as given.
+        near: GLfloat,
+        /// `far`, as given.
+        far: GLfloat,
+    },
+    /// glClipPlanex, compiled into a list.
+    glClipPlanex {
+        /// `plane`, as given.
+        plane: GLenum,
+        /// The values `equation` pointed to at compile time.
+        equation: Vec<GLfixed>,
+    },
+    /// glClipPlanef, compiled into a list.
+    glClipPlanef {
+        /// `plane`, as given.
+        plane: GLenum,
+        /// The values `equation` pointed to at compile time.
+        equation: Vec<GLfloat>,
+    },
+    /// glPointSizex, compiled into a list.
+    glPointSizex {
+        /// `size`, as given.
+        size: GLfixed,
+    },
+    /// glPointParameterx, compiled into a list.
+    glPointParameterx {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfixed,
+    },
+    /// glPointParameterxv, compiled into a list.
+    glPointParameterxv {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfixed>,
+    },
+    /// glLineWidthx, compiled into a list.
+    glLineWidthx {
+        /// `width`, as given.
+        width: GLfixed,
+    },
+    /// glFogx, compiled into a list.
+    glFogx {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfixed,
+    },
+    /// glFogxv, compiled into a list.
+    glFogxv {
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfixed>,
+    },
+    /// glTexEnvx, compiled into a list.
+    glTexEnvx {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfixed,
+    },
+    /// glTexEnvxv, compiled into a list.
+    glTexEnvxv {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfixed>,
+    },
+    /// glTexParameterx, compiled into a list.
+    glTexParameterx {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfixed,
+    },
+    /// glTexParameterxv, compiled into a list.
+    glTexParameterxv {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfixed>,
+    },
+    /// glClearColorx, compiled into a list.
+    glClearColorx {
+        /// `red`, as given.
+        red: GLclampx,
+        /// `green`, as given.
+        green: GLclampx,
+        /// `blue`, as given.
+        blue: GLclampx,
+        /// `alpha`, as given.
+        alpha: GLclampx,
+    },
+    /// glClearDepthx, compiled into a list.
+    glClearDepthx {
+        /// `depth`, as given.
+        depth: GLclampx,
+    },
+    /// glClearDepthf, compiled into a list.
+    glClearDepthf {
+        /// `depth`, as given.
+        depth: GLclampf,
+    },
+    /// glDepthRangex, compiled into a list.
+    glDepthRangex {
+        /// `near`, as given.
+        near: GLclampx,
+        /// `far`, as given.
+        far: GLclampx,
+    },
+    /// glDepthRangef, compiled into a list.
+    glDepthRangef {
+        /// `near`, as given.
+        near: GLclampf,
+        /// `far`, as given.
+        far: GLclampf,
+    },
+    /// glAlphaFuncx, compiled into a list.
+    glAlphaFuncx {
+        /// `func`, as given.
+        func: GLenum,
+        /// `reference`, as given.
+        reference: GLclampx,
+    },
+    /// glPolygonOffsetx, compiled into a list.
+    glPolygonOffsetx {
+        /// `factor`, as given.
+        factor: GLfixed,
+        /// `units`, as given.
+        units: GLfixed,
+    },
+    /// glSampleCoveragex, compiled into a list.
+    glSampleCoveragex {
+        /// `value`, as given.
+        value: GLclampx,
+        /// `invert`, as given.
+        invert: GLboolean,
+    },
+    /// glColorTable, compiled into a list.
+    glColorTable {
+        /// `target`, as given.
+        target: GLenum,
+        /// `internalformat`, as given.
+        internalformat: GLenum,
+        /// `width`, as given.
+        width: GLsizei,
+        /// `format`, as given.
+        format: GLenum,
+        /// `ty`, as given.
+        ty: GLenum,
+        /// The values `table` pointed to at compile time.
+        table: Vec<u8>,
+    },
+    /// glColorSubTable, compiled into a list.
+    glColorSubTable {
+        /// `target`, as given.
+        target: GLenum,
+        /// `start`, as given.
+        start: GLsizei,
+        /// `count`, as given.
+        count: GLsizei,
+        /// `format`, as given.
+        format: GLenum,
+        /// `ty`, as given.
+        ty: GLenum,
+        /// The values `data` pointed to at compile time.
+        data: Vec<u8>,
+    },
+    /// glColorTableParameterfv, compiled into a list.
+    glColorTableParameterfv {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfloat>,
+    },
+    /// glColorTableParameteriv, compiled into a list.
+    glColorTableParameteriv {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLint>,
+    },
+    /// glCopyColorTable, compiled into a list.
+    glCopyColorTable {
+        /// `target`, as given.
+        target: GLenum,
+        /// `internalformat`, as given.
+        internalformat: GLenum,
+        /// `_x`, as given.
+        _x: GLint,
+        /// `_y`, as given.
+        _y: GLint,
+        /// `width`, as given.
+        width: GLsizei,
+    },
+    /// glCopyColorSubTable, compiled into a list.
+    glCopyColorSubTable {
+        /// `target`, as given.
+        target: GLenum,
+        /// `start`, as given.
+        start: GLsizei,
+        /// `_x`, as given.
+        _x: GLint,
+        /// `_y`, as given.
+        _y: GLint,
+        /// `width`, as given.
+        width: GLsizei,
+    },
+    /// glConvolutionFilter1D, compiled into a list.
+    glConvolutionFilter1D {
+        /// `target`, as given.
+        target: GLenum,
+        /// `internalformat`, as given.
+        internalformat: GLenum,
+        /// `width`, as given.
+        width: GLsizei,
+        /// `format`, as given.
+        format: GLenum,
+        /// `ty`, as given.
+        ty: GLenum,
+        /// The values `image` pointed to at compile time.
+        image: Vec<u8>,
+    },
+    /// glConvolutionFilter2D, compiled into a list.
+    glConvolutionFilter2D {
+        /// `target`, as given.
+        target: GLenum,
+        /// `internalformat`, as given.
+        internalformat: GLenum,
+        /// `width`, as given.
+        width: GLsizei,
+        /// `height`, as given.
+        height: GLsizei,
+        /// `format`, as given.
+        format: GLenum,
+        /// `ty`, as given.
+        ty: GLenum,
+        /// The values `image` pointed to at compile time.
+        image: Vec<u8>,
+    },
+    /// glSeparableFilter2D, compiled into a list.
+    glSeparableFilter2D {
+        /// `target`, as given.
+        target: GLenum,
+        /// `internalformat`, as given.
+        internalformat: GLenum,
+        /// `width`, as given.
+        width: GLsizei,
+        /// `height`, as given.
+        height: GLsizei,
+        /// `format`, as given.
+        format: GLenum,
+        /// `ty`, as given.
+        ty: GLenum,
+        /// The values `row` pointed to at compile time.
+        row: Vec<u8>,
+        /// The values `column` pointed to at compile time.
+        column: Vec<u8>,
+    },
+    /// glCopyConvolutionFilter1D, compiled into a list.
+    glCopyConvolutionFilter1D {
+        /// `target`, as given.
+        target: GLenum,
+        /// `internalformat`, as given.
+        internalformat: GLenum,
+        /// `_x`, as given.
+        _x: GLint,
+        /// `_y`, as given.
+        _y: GLint,
+        /// `width`, as given.
+        width: GLsizei,
+    },
+    /// glCopyConvolutionFilter2D, compiled into a list.
+    glCopyConvolutionFilter2D {
+        /// `target`, as given.
+        target: GLenum,
+        /// `internalformat`, as given.
+        internalformat: GLenum,
+        /// `_x`, as given.
+        _x: GLint,
+        /// `_y`, as given.
+        _y: GLint,
+        /// `width`, as given.
+        width: GLsizei,
+        /// `height`, as given.
+        height: GLsizei,
+    },
+    /// glConvolutionParameterf, compiled into a list.
+    glConvolutionParameterf {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLfloat,
+    },
+    /// glConvolutionParameteri, compiled into a list.
+    glConvolutionParameteri {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// `param`, as given.
+        param: GLint,
+    },
+    /// glConvolutionParameterfv, compiled into a list.
+    glConvolutionParameterfv {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLfloat>,
+    },
+    /// glConvolutionParameteriv, compiled into a list.
+    glConvolutionParameteriv {
+        /// `target`, as given.
+        target: GLenum,
+        /// `pname`, as given.
+        pname: GLenum,
+        /// The values `params` pointed to at compile time.
+        params: Vec<GLint>,
+    },
+    /// glHistogram, compiled into a list.
+    glHistogram {
+        /// `target`, as given.
+        target: GLenum,
+        /// `width`, as given.
+        width: GLsizei,
+        /// `internalformat`, as given.
+        internalformat: GLenum,
+        /// `sink`, as given.
+        sink: GLboolean,
+    },
+    /// glResetHistogram, compiled into a list.
+    glResetHistogram {
+        /// `target`, as given.
+        target: GLenum,
+    },
+    /// glMinmax, compiled into a list.
+    glMinmax {
+        /// `target`, as given.
+        target: GLenum,
+        /// `internalformat`, as given.
+        internalformat: GLenum,
+        /// `sink`, as given.
+        sink: GLboolean,
+    },
+    /// glResetMinmax, compiled into a list.
+    glResetMinmax {
+        /// `target`, as given.
+        target: GLenum,
+    },
 }
 
 impl TableCommand {

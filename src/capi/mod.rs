@@ -1,7 +1,7 @@
 //! The C ABI: every exported GL entry point. The only `unsafe` code of the crate.
 //!
 //! Each entry point decodes its pointers into slices and runs one `Context` method through
-//! [`with_context`], which finds the current context, records the GL error and keeps Rust
+//! `with_context`, which finds the current context, records the GL error and keeps Rust
 //! panics from crossing into C.
 #![allow(unsafe_code)]
 

@@ -28,6 +28,14 @@ use crate::state::arrays::{ARRAY_KINDS, ArrayKind, ByteSpan, ClientArray, Vertex
 use crate::threads::threads_for;
 
 /// The size of one index of glDrawElements' `type`; `None` for an invalid type.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{commands::arrays::index_size, gl::*};
+/// assert_eq!(index_size(GL_UNSIGNED_SHORT), Some(2));
+/// assert_eq!(index_size(GL_FLOAT), None);
+/// ```
 pub fn index_size(index_type: GLenum) -> Option<usize> {
     match index_type {
         GL_UNSIGNED_BYTE => Some(1),
@@ -41,15 +49,36 @@ pub fn index_size(index_type: GLenum) -> Option<usize> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ElementIndices<'a> {
     /// glDrawArrays: `first`, `first + 1`, ..., `count` of them.
-    Sequential { first: usize, count: usize },
+    Sequential {
+        /// The first element.
+        first: usize,
+        /// How many elements.
+        count: usize,
+    },
     /// glDrawElements: indices of `index_type` (GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT or
     /// GL_UNSIGNED_INT) in native byte order, at any alignment; a partial index at the end
     /// is ignored.
-    Listed { index_type: GLenum, bytes: &'a [u8] },
+    Listed {
+        /// GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT or GL_UNSIGNED_INT.
+        index_type: GLenum,
+        /// The indices' bytes.
+        bytes: &'a [u8],
+    },
 }
 
 impl ElementIndices<'_> {
     /// How many vertices the draw has.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ElementIndices, gl::*};
+    /// let indices = [0u16, 1, 2];
+    /// let bytes: Vec<u8> = indices.iter().flat_map(|i| i.to_ne_bytes()).collect();
+    /// let listed = ElementIndices::Listed { index_type: GL_UNSIGNED_SHORT, bytes: &bytes };
+    /// assert_eq!(listed.len(), 3);
+    /// assert_eq!(ElementIndices::Sequential { first: 4, count: 2 }.range(), Some((4, 5)));
+    /// ```
     pub fn len(&self) -> usize {
         match *self {
             ElementIndices::Sequential { count, .. } => count,
@@ -59,11 +88,28 @@ impl ElementIndices<'_> {
         }
     }
 
+    /// Whether the draw has no vertex.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::commands::arrays::ElementIndices;
+    /// assert!(ElementIndices::Sequential { first: 3, count: 0 }.is_empty());
+    /// ```
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
 
     /// Calls `f` with each index, in order.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ElementIndices, gl::*};
+    /// let mut seen = Vec::new();
+    /// ElementIndices::Listed { index_type: GL_UNSIGNED_BYTE, bytes: &[2, 0, 1] }.for_each(|i| seen.push(i));
+    /// assert_eq!(seen, [2, 0, 1]);
+    /// ```
     pub fn for_each(&self, mut f: impl FnMut(usize)) {
         match *self {
             ElementIndices::Sequential { first, count } => {
@@ -86,6 +132,15 @@ impl ElementIndices<'_> {
     }
 
     /// The smallest and the largest index; `None` when there are none.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ElementIndices, gl::*};
+    /// let listed = ElementIndices::Listed { index_type: GL_UNSIGNED_BYTE, bytes: &[7, 3, 5] };
+    /// assert_eq!(listed.range(), Some((3, 7)));
+    /// assert_eq!(ElementIndices::Sequential { first: 0, count: 0 }.range(), None);
+    /// ```
     pub fn range(&self) -> Option<(usize, usize)> {
         match *self {
             ElementIndices::Sequential { count: 0, .. } => None,
@@ -108,12 +163,23 @@ impl ElementIndices<'_> {
 /// enabled are not read.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ArraySources<'a> {
+    /// The first element any array's bytes hold.
     pub base: usize,
+    /// Each array's bytes by `ArrayKind`, empty for the arrays that are not read.
     pub bytes: [&'a [u8]; ARRAY_KINDS],
 }
 
 impl<'a> ArraySources<'a> {
     /// Sources whose slices start with element `base`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ArraySources, state::arrays::ArrayKind};
+    /// let sources = ArraySources::new(10);
+    /// assert_eq!(sources.base, 10);
+    /// assert!(sources.bytes[ArrayKind::Vertex as usize].is_empty());
+    /// ```
     pub fn new(base: usize) -> ArraySources<'a> {
         ArraySources {
             base,
@@ -122,6 +188,15 @@ impl<'a> ArraySources<'a> {
     }
 
     /// These sources with `bytes` for the array `kind`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ArraySources, state::arrays::ArrayKind};
+    /// let bytes = [0u8; 12];
+    /// let sources = ArraySources::new(0).with(ArrayKind::Normal, &bytes);
+    /// assert_eq!(sources.bytes[ArrayKind::Normal as usize].len(), 12);
+    /// ```
     pub fn with(mut self, kind: ArrayKind, bytes: &'a [u8]) -> ArraySources<'a> {
         self.bytes[kind as usize] = bytes;
         self
@@ -256,6 +331,17 @@ fn check_draw(ctx: &Context, mode: GLenum, indices: &ElementIndices) -> GlResult
 
 impl Context {
     /// The vertex array state.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.client_state(GL_TEXTURE_COORD_ARRAY, true)?;
+    /// ctx.client_active_texture(GL_TEXTURE1)?;
+    /// assert_eq!(ctx.vertex_arrays().client_active_texture, 1);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn vertex_arrays(&self) -> &VertexArrays {
         &self.arrays
     }
@@ -263,6 +349,18 @@ impl Context {
     /// glVertexPointer. `address` is the application's pointer (0 for NULL): only the C
     /// layer reads through it. Like Mesa, the pointer commands are accepted between glBegin
     /// and glEnd (GL 1.5 §2.6.3 leaves the error optional).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// let positions = [0.0f32; 12];
+    /// ctx.vertex_pointer(3, GL_FLOAT, 0, positions.as_ptr() as usize)?;
+    /// assert_eq!(ctx.get_pointer(GL_VERTEX_ARRAY_POINTER)?, positions.as_ptr() as usize);
+    /// assert_eq!(ctx.vertex_pointer(1, GL_FLOAT, 0, 0), Err(GlError::InvalidValue)); // size 1
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn vertex_pointer(
         &mut self,
         size: i32,
@@ -275,6 +373,17 @@ impl Context {
     }
 
     /// glNormalPointer.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.normal_pointer(GL_BYTE, 0, 0x100)?;
+    /// assert_eq!(ctx.get(GL_NORMAL_ARRAY_TYPE)?.as_ints(), [GL_BYTE as i32]);
+    /// assert_eq!(ctx.normal_pointer(GL_UNSIGNED_BYTE, 0, 0x100), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn normal_pointer(
         &mut self,
         component_type: GLenum,
@@ -286,6 +395,17 @@ impl Context {
     }
 
     /// glColorPointer.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.color_pointer(4, GL_UNSIGNED_BYTE, 0, 0x100)?;
+    /// assert_eq!(ctx.get(GL_COLOR_ARRAY_SIZE)?.as_ints(), [4]);
+    /// assert_eq!(ctx.color_pointer(2, GL_FLOAT, 0, 0x100), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn color_pointer(
         &mut self,
         size: i32,
@@ -298,6 +418,16 @@ impl Context {
     }
 
     /// glTexCoordPointer.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.tex_coord_pointer(2, GL_FLOAT, 16, 0x100)?;
+    /// assert_eq!(ctx.get(GL_TEXTURE_COORD_ARRAY_STRIDE)?.as_ints(), [16]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn tex_coord_pointer(
         &mut self,
         size: i32,
@@ -310,12 +440,33 @@ impl Context {
     }
 
     /// glEdgeFlagPointer: the flags are GLbooleans.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.edge_flag_pointer(0, 0x100)?;
+    /// assert_eq!(ctx.get_pointer(GL_EDGE_FLAG_ARRAY_POINTER)?, 0x100);
+    /// assert_eq!(ctx.edge_flag_pointer(-1, 0x100), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn edge_flag_pointer(&mut self, stride: i32, address: usize) -> GlResult {
         self.arrays
             .set_pointer(ArrayKind::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, address)
     }
 
     /// glSecondaryColorPointer (GL 1.4).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.secondary_color_pointer(3, GL_FLOAT, 0, 0x100)?;
+    /// assert_eq!(ctx.secondary_color_pointer(4, GL_FLOAT, 0, 0x100), Err(GlError::InvalidValue)); // 3 only
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn secondary_color_pointer(
         &mut self,
         size: i32,
@@ -333,6 +484,16 @@ impl Context {
     }
 
     /// glIndexPointer.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.index_pointer(GL_SHORT, 0, 0x100)?;
+    /// assert_eq!(ctx.get(GL_INDEX_ARRAY_TYPE)?.as_ints(), [GL_SHORT as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn index_pointer(
         &mut self,
         component_type: GLenum,
@@ -344,6 +505,16 @@ impl Context {
     }
 
     /// glFogCoordPointer (GL 1.4).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.fog_coord_pointer(GL_DOUBLE, 0, 0x100)?;
+    /// assert_eq!(ctx.fog_coord_pointer(GL_INT, 0, 0x100), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn fog_coord_pointer(
         &mut self,
         component_type: GLenum,
@@ -356,16 +527,50 @@ impl Context {
 
     /// glEnableClientState / glDisableClientState. GL_INDEX_ARRAY is accepted and only
     /// stored (fflight has no color index mode).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.client_state(GL_NORMAL_ARRAY, true)?;
+    /// assert_eq!(ctx.get(GL_NORMAL_ARRAY)?.as_bools(), [true]);
+    /// assert_eq!(ctx.client_state(GL_LIGHTING, true), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn client_state(&mut self, array: GLenum, enabled: bool) -> GlResult {
         self.arrays.set_enabled(array, enabled)
     }
 
     /// glInterleavedArrays (table 2.5).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.interleaved_arrays(GL_N3F_V3F, 0, 0x1000)?;
+    /// assert_eq!(ctx.get(GL_NORMAL_ARRAY)?.as_bools(), [true]);
+    /// assert_eq!(ctx.get(GL_VERTEX_ARRAY_STRIDE)?.as_ints(), [24]); // the normal and the vertex
+    /// assert_eq!(ctx.get_pointer(GL_VERTEX_ARRAY_POINTER)?, 0x1000 + 12);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn interleaved_arrays(&mut self, format: GLenum, stride: i32, address: usize) -> GlResult {
         self.arrays.set_interleaved(format, stride, address)
     }
 
     /// glGetPointerv: an array's address, or the feedback buffer's.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.feedback_buffer(4, GL_2D, 0x2000)?;
+    /// assert_eq!(ctx.get_pointer(GL_FEEDBACK_BUFFER_POINTER)?, 0x2000);
+    /// assert_eq!(ctx.get_pointer(GL_COLOR_ARRAY_POINTER)?, 0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_pointer(&self, pname: GLenum) -> GlResult<usize> {
         self.outside_begin_end()?;
         match ArrayKind::of_pointer_name(pname) {
@@ -378,12 +583,33 @@ impl Context {
 
     /// glArrayElement's checks: a negative index is GL_INVALID_VALUE (GL leaves it
     /// undefined; it would read before the arrays). Legal between glBegin and glEnd.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{Context, GlError};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.check_array_element(5)?, 5);
+    /// assert_eq!(ctx.check_array_element(-1), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn check_array_element(&self, index: i32) -> GlResult<usize> {
         usize::try_from(index).map_err(|_| GlError::InvalidValue)
     }
 
     /// glDrawArrays' checks, in Mesa's order: glBegin/glEnd, count, mode. A negative
     /// `first` is GL_INVALID_VALUE (GL leaves it undefined, Mesa reads before the arrays).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ElementIndices, gl::*, Context, GlError};
+    /// let ctx = Context::new();
+    /// let elements = ctx.check_draw_arrays(GL_TRIANGLES, 2, 3)?;
+    /// assert_eq!(elements, ElementIndices::Sequential { first: 2, count: 3 });
+    /// assert_eq!(ctx.check_draw_arrays(GL_TRIANGLES, 0, -1), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn check_draw_arrays(
         &self,
         mode: GLenum,
@@ -401,6 +627,17 @@ impl Context {
     /// order (glBegin/glEnd, primcount, mode, index type); returns how many draws it holds.
     /// Each draw is then the glDrawArrays or glDrawElements the spec's loop makes, for the
     /// counts above 0 only: a negative count is skipped, not an error (Mesa rejects the call).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.check_multi_draw(GL_TRIANGLES, None, 3)?, 3); // glMultiDrawArrays
+    /// assert_eq!(ctx.check_multi_draw(GL_TRIANGLES, Some(GL_FLOAT), 3), Err(GlError::InvalidEnum));
+    /// assert_eq!(ctx.check_multi_draw(GL_TRIANGLES, None, -1), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn check_multi_draw(
         &self,
         mode: GLenum,
@@ -418,6 +655,19 @@ impl Context {
 
     /// glDrawElements' checks, in Mesa's order: glBegin/glEnd, count, mode, type. Returns
     /// how many bytes of indices the draw reads.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// // With the vertex array disabled nothing is drawn, so no index is read.
+    /// assert_eq!(ctx.check_draw_elements(GL_LINES, 4, GL_UNSIGNED_SHORT)?, 0);
+    /// ctx.client_state(GL_VERTEX_ARRAY, true)?;
+    /// assert_eq!(ctx.check_draw_elements(GL_LINES, 4, GL_UNSIGNED_SHORT)?, 8); // bytes of indices
+    /// assert_eq!(ctx.check_draw_elements(GL_LINES, 4, GL_FLOAT), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn check_draw_elements(
         &self,
         mode: GLenum,
@@ -437,6 +687,15 @@ impl Context {
     /// glDrawRangeElements' checks: `end < start` first (Mesa's order), then glDrawElements'.
     /// `start` and `end` are a hint only: indices outside them are drawn, and what is read
     /// is decided by the indices themselves.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.check_draw_range_elements(GL_POINTS, 5, 2, 1, GL_UNSIGNED_INT), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn check_draw_range_elements(
         &self,
         mode: GLenum,
@@ -456,6 +715,20 @@ impl Context {
     /// start with; `None` when the draw reads nothing (no indices, or the vertex array is
     /// disabled: then no vertex is made, §2.8). A NULL pointer among the enabled arrays is
     /// GL_INVALID_OPERATION: GL leaves it undefined, fflight draws nothing.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ElementIndices, gl::*, state::arrays::ArrayKind, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.vertex_pointer(3, GL_FLOAT, 0, 0x1000)?;
+    /// ctx.client_state(GL_VERTEX_ARRAY, true)?;
+    /// let (first, spans) = ctx.array_spans(&ElementIndices::Sequential { first: 2, count: 2 })?.unwrap();
+    /// let vertices = spans[ArrayKind::Vertex as usize].unwrap();
+    /// // Elements 2 and 3: 24 bytes from element 2 on.
+    /// assert_eq!((first, vertices.address, vertices.len), (2, 0x1000 + 24, 24));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn array_spans(
         &self,
         indices: &ElementIndices,
@@ -474,6 +747,20 @@ impl Context {
     /// glTexCoord, glColor, glNormal and glVertex calls of the enabled arrays, so the
     /// current attributes become the element's (and an enabled color material follows the
     /// color). Legal between glBegin and glEnd, where the vertex joins the primitive.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ArraySources, gl::*, state::arrays::ArrayKind, Context};
+    /// let mut ctx = Context::new();
+    /// let colors = [1.0f32, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0];
+    /// ctx.color_pointer(4, GL_FLOAT, 0, colors.as_ptr() as usize)?;
+    /// ctx.client_state(GL_COLOR_ARRAY, true)?;
+    /// let bytes: Vec<u8> = colors.iter().flat_map(|c| c.to_ne_bytes()).collect();
+    /// ctx.array_element_from(1, &ArraySources::new(0).with(ArrayKind::Color, &bytes))?;
+    /// assert_eq!(ctx.get(GL_CURRENT_COLOR)?.as_floats(), [0.0, 1.0, 0.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn array_element_from(&mut self, index: usize, sources: &ArraySources) -> GlResult {
         let element = self.array_element_values(index, sources)?;
         self.apply_array_element(&element);
@@ -481,6 +768,26 @@ impl Context {
     }
 
     /// The values the enabled arrays give element `index` (what glArrayElement compiles).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ArraySources, commands::list::Command, gl::*};
+    /// use fflight::{state::arrays::ArrayKind, Context};
+    /// let mut ctx = Context::new();
+    /// let normals = [0i16, 0, 32767];
+    /// ctx.normal_pointer(GL_SHORT, 0, normals.as_ptr() as usize)?;
+    /// ctx.client_state(GL_NORMAL_ARRAY, true)?;
+    /// let bytes: Vec<u8> = normals.iter().flat_map(|n| n.to_ne_bytes()).collect();
+    /// let element = ctx.array_element_values(0, &ArraySources::new(0).with(ArrayKind::Normal, &bytes))?;
+    /// // What a display list keeps of glArrayElement(0); replayed, it sets the normal.
+    /// Command::ArrayElement(element).execute(&mut ctx)?;
+    /// // Shorts map to [-1, 1] as table 2.9 says: (2c + 1) / (2^16 - 1), so 0 is not quite 0.
+    /// let normal = ctx.get(GL_CURRENT_NORMAL)?.as_floats();
+    /// assert_eq!(normal[2], 1.0);
+    /// assert!((normal[0] - 1.0 / 65535.0).abs() < 1e-9);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn array_element_values(
         &self,
         index: usize,
@@ -532,6 +839,26 @@ impl Context {
     /// GL_INVALID_OPERATION when `sources` misses bytes of an enabled array;
     /// GL_INVALID_VALUE when sequential indices would run past `usize::MAX`;
     /// GL_OUT_OF_MEMORY when the vertices do not fit in memory.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ArraySources, gl::*, state::arrays::ArrayKind, Context};
+    /// let mut ctx = Context::new();
+    /// let positions = [0.0f32, 0.0, 1.0, 0.0, 0.0, 1.0];
+    /// ctx.vertex_pointer(2, GL_FLOAT, 0, positions.as_ptr() as usize)?;
+    /// ctx.client_state(GL_VERTEX_ARRAY, true)?;
+    /// // The C layer finds the bytes through the pointers; from Rust, hand them over.
+    /// let bytes: Vec<u8> = positions.iter().flat_map(|p| p.to_ne_bytes()).collect();
+    /// let sources = ArraySources::new(0).with(ArrayKind::Vertex, &bytes);
+    /// let indices = ctx.check_draw_arrays(GL_TRIANGLES, 0, 3)?;
+    /// ctx.capture_begin()?;
+    /// ctx.draw_arrays_from(GL_TRIANGLES, &sources, &indices)?;
+    /// ctx.capture_end()?;
+    /// assert_eq!(ctx.captured().primitives().len(), 1);
+    /// assert_eq!(ctx.captured().vertices()[1].eye.x, 1.0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn draw_arrays_from(
         &mut self,
         mode: GLenum,
@@ -560,6 +887,27 @@ impl Context {
     /// A draw compiled into a display list (§5.4): `draw_arrays_from`'s checks, then a copy
     /// of the elements the draw uses, so that the list keeps them whatever later happens to
     /// the arrays.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ArraySources, commands::list::Command, gl::*};
+    /// use fflight::{state::arrays::ArrayKind, Context};
+    /// let mut ctx = Context::new();
+    /// let positions = [0.0f32, 0.0, 1.0, 0.0];
+    /// ctx.vertex_pointer(2, GL_FLOAT, 0, positions.as_ptr() as usize)?;
+    /// ctx.client_state(GL_VERTEX_ARRAY, true)?;
+    /// let bytes: Vec<u8> = positions.iter().flat_map(|p| p.to_ne_bytes()).collect();
+    /// let sources = ArraySources::new(0).with(ArrayKind::Vertex, &bytes);
+    /// let indices = ctx.check_draw_arrays(GL_LINES, 0, 2)?;
+    /// let recorded = ctx.record_draw(GL_LINES, &sources, &indices)?;
+    /// // The copy draws the line whatever happens to `positions` later.
+    /// ctx.capture_begin()?;
+    /// Command::Draw(Box::new(recorded)).execute(&mut ctx)?;
+    /// ctx.capture_end()?;
+    /// assert_eq!(ctx.captured().primitives()[0].kind, GL_LINES);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn record_draw(
         &self,
         mode: GLenum,

@@ -276,6 +276,20 @@ fn save<G>(ctx: &Context, table: &GroupTable<G>, mask: GLbitfield) -> Vec<G> {
 impl Context {
     /// glPushAttrib (§6.1.14): saves the groups `mask` names (bits naming no group are
     /// ignored, GL_ALL_ATTRIB_BITS names them all). GL_STACK_OVERFLOW when the stack is full.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.push_attrib(GL_LIGHTING_BIT)?;
+    /// ctx.set_capability(GL_LIGHTING, true)?;
+    /// ctx.light(GL_LIGHT0, GL_DIFFUSE, &[1.0, 0.0, 0.0, 1.0])?;
+    /// ctx.pop_attrib()?;
+    /// assert!(!ctx.is_enabled(GL_LIGHTING)?);
+    /// assert_eq!(ctx.get_light(GL_LIGHT0, GL_DIFFUSE)?.0, glam::Vec4::ONE);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn push_attrib(&mut self, mask: GLbitfield) -> GlResult {
         self.outside_begin_end()?;
         if self.attrib_stack.len() >= MAX_ATTRIB_STACK_DEPTH {
@@ -288,6 +302,14 @@ impl Context {
 
     /// glPopAttrib (§6.1.14): restores the groups the matching glPushAttrib saved.
     /// GL_STACK_UNDERFLOW when the stack is empty.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{Context, GlError};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.pop_attrib(), Err(GlError::StackUnderflow));
+    /// ```
     pub fn pop_attrib(&mut self) -> GlResult {
         self.outside_begin_end()?;
         let saved = self.attrib_stack.pop().ok_or(GlError::StackUnderflow)?;
@@ -302,6 +324,17 @@ impl Context {
     }
 
     /// glPushClientAttrib (§6.1.14): as glPushAttrib, for the client groups.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.push_client_attrib(GL_CLIENT_PIXEL_STORE_BIT)?;
+    /// assert_eq!(ctx.client_attrib_stack_depth(), 1);
+    /// ctx.pop_client_attrib()?;
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn push_client_attrib(&mut self, mask: GLbitfield) -> GlResult {
         self.outside_begin_end()?;
         if self.client_attrib_stack.len() >= MAX_CLIENT_ATTRIB_STACK_DEPTH {
@@ -313,6 +346,14 @@ impl Context {
     }
 
     /// glPopClientAttrib (§6.1.14).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{Context, GlError};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.pop_client_attrib(), Err(GlError::StackUnderflow));
+    /// ```
     pub fn pop_client_attrib(&mut self) -> GlResult {
         self.outside_begin_end()?;
         let saved = self
@@ -326,11 +367,28 @@ impl Context {
     }
 
     /// GL_ATTRIB_STACK_DEPTH.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.push_attrib(GL_ALL_ATTRIB_BITS)?;
+    /// assert_eq!(ctx.attrib_stack_depth(), 1);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn attrib_stack_depth(&self) -> usize {
         self.attrib_stack.len()
     }
 
     /// GL_CLIENT_ATTRIB_STACK_DEPTH.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::Context;
+    /// assert_eq!(Context::new().client_attrib_stack_depth(), 0);
+    /// ```
     pub fn client_attrib_stack_depth(&self) -> usize {
         self.client_attrib_stack.len()
     }

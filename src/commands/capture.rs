@@ -19,12 +19,23 @@ use crate::threads::threads_for;
 /// bytes in and has `size` floats.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FloatLayout {
+    /// Floats per element (a position has 2 to 4).
     pub size: usize,
+    /// Bytes from one element to the next (0 given: tightly packed, made explicit here).
     pub stride: usize,
 }
 
 impl FloatLayout {
     /// `stride` in bytes, 0 for tightly packed; negative is GL_INVALID_VALUE.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::capture::FloatLayout, GlError};
+    /// assert_eq!(FloatLayout::new(3, 0)?.stride, 12); // 0: tightly packed
+    /// assert_eq!(FloatLayout::new(3, -4).err(), Some(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn new(size: usize, stride: i32) -> GlResult<FloatLayout> {
         let stride = usize::try_from(stride).map_err(|_| GlError::InvalidValue)?;
         Ok(FloatLayout {
@@ -34,6 +45,16 @@ impl FloatLayout {
     }
 
     /// Bytes `count` elements occupy; `None` if that does not fit the address space.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::commands::capture::FloatLayout;
+    /// let layout = FloatLayout::new(3, 16)?; // 3 floats every 16 bytes
+    /// assert_eq!(layout.len(2), Some(16 + 12)); // the last element unpadded
+    /// assert_eq!(layout.len(0), Some(0));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn len(&self, count: usize) -> Option<usize> {
         match count {
             0 => Some(0),
@@ -45,11 +66,28 @@ impl FloatLayout {
     }
 
     /// Byte offset of element `i`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::commands::capture::FloatLayout;
+    /// assert_eq!(FloatLayout::new(4, 0)?.offset(3), 48);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn offset(&self, i: usize) -> usize {
         i * self.stride
     }
 
     /// Element `i` of `bytes`, padded with (0, 0, 0, 1).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::commands::capture::FloatLayout;
+    /// let bytes: Vec<u8> = [1.0f32, 2.0].iter().flat_map(|v| v.to_ne_bytes()).collect();
+    /// assert_eq!(FloatLayout::new(2, 0)?.read(&bytes, 0), [1.0, 2.0, 0.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn read(&self, bytes: &[u8], i: usize) -> [f32; 4] {
         let mut out = [0.0, 0.0, 0.0, 1.0];
         let offset = self.offset(i);
@@ -66,6 +104,25 @@ impl FloatLayout {
 impl Context {
     /// fflCaptureBegin: starts capturing the primitives of every draw, dropping what an
     /// earlier capture collected. GL_INVALID_OPERATION between glBegin and glEnd.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// use glam::Vec4;
+    /// let mut ctx = Context::new();
+    /// ctx.capture_begin()?;
+    /// ctx.begin(GL_TRIANGLES)?;
+    /// for x in [0.0, 1.0, 0.0] {
+    ///     ctx.vertex(Vec4::new(x, x, -1.0, 1.0));
+    /// }
+    /// ctx.end()?;
+    /// ctx.capture_end()?;
+    /// let capture = ctx.captured();
+    /// assert_eq!((capture.vertices().len(), capture.primitives().len()), (3, 1));
+    /// assert_eq!(capture.primitives()[0].kind, GL_TRIANGLES);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn capture_begin(&mut self) -> GlResult {
         self.outside_begin_end()?;
         self.capture.start();
@@ -75,6 +132,20 @@ impl Context {
     /// fflCaptureEnd: stops capturing; what was collected stays readable.
     /// GL_INVALID_OPERATION between glBegin and glEnd (the primitive in progress is not drawn
     /// yet).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.capture_begin()?;
+    /// ctx.capture_end()?;
+    /// ctx.begin(GL_POINTS)?; // not captured: capture ended
+    /// ctx.vertex(glam::Vec4::W);
+    /// ctx.end()?;
+    /// assert!(ctx.captured().vertices().is_empty());
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn capture_end(&mut self) -> GlResult {
         self.outside_begin_end()?;
         self.capture.stop();
@@ -82,6 +153,24 @@ impl Context {
     }
 
     /// What capture collected.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.set_capability(GL_LIGHTING, true)?;
+    /// ctx.set_capability(GL_LIGHT0, true)?;
+    /// ctx.capture_begin()?;
+    /// ctx.begin(GL_POINTS)?;
+    /// ctx.vertex(glam::Vec4::new(0.0, 0.0, -1.0, 1.0));
+    /// ctx.end()?;
+    /// ctx.capture_end()?;
+    /// let lit = ctx.captured().vertices()[0].colors.front.primary;
+    /// // Light 0 from +z on the default normal: ambient 0.2 * 0.2 plus diffuse 0.8.
+    /// assert!((lit.x - 0.84).abs() < 1e-6);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn captured(&self) -> &Capture {
         &self.capture
     }
@@ -92,6 +181,26 @@ impl Context {
     /// glColor, glNormal, glVertex would give the vertex in immediate mode; the current
     /// attributes are left unchanged, and nothing is drawn or captured. GL_INVALID_OPERATION
     /// between glBegin and glEnd.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// use glam::{Vec3, Vec4};
+    /// let mut ctx = Context::new();
+    /// ctx.set_capability(GL_LIGHTING, true)?;
+    /// ctx.set_capability(GL_LIGHT0, true)?;
+    /// let normals = [Vec3::Z, Vec3::X];
+    /// let mut red = [0.0; 2];
+    /// ctx.light_vertices_with(
+    ///     2,
+    ///     |i| (Vec4::new(i as f32, 0.0, 0.0, 1.0), Some(normals[i]), None),
+    ///     |i, lit| red[i] = lit.colors.front.primary.x,
+    /// )?;
+    /// // Facing the light: 0.04 + 0.8; at right angles to it: the ambient part only.
+    /// assert!((red[0] - 0.84).abs() < 1e-6 && (red[1] - 0.04).abs() < 1e-6);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn light_vertices_with(
         &mut self,
         count: usize,
@@ -129,6 +238,32 @@ impl Context {
     /// `emit(first, block)` receives them lit. Blocks are independent, so the results do not
     /// depend on the thread count; `emit` is called from the threads, each block once.
     /// GL_INVALID_OPERATION between glBegin and glEnd.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// use std::sync::Mutex;
+    /// let mut ctx = Context::new();
+    /// let lit = Mutex::new(vec![0.0f32; 20]);
+    /// ctx.light_blocks(
+    ///     20,
+    ///     |first, block| {
+    ///         for lane in 0..block.len {
+    ///             let x = (first + lane) as f32;
+    ///             block.set_position(lane, glam::Vec4::new(x, 0.0, 0.0, 1.0));
+    ///         }
+    ///     },
+    ///     |first, block| {
+    ///         let mut lit = lit.lock().unwrap();
+    ///         for lane in 0..block.len {
+    ///             lit[first + lane] = block.vertex(lane).eye.x;
+    ///         }
+    ///     },
+    /// )?;
+    /// assert_eq!(lit.into_inner().unwrap()[19], 19.0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn light_blocks(
         &mut self,
         count: usize,
@@ -175,6 +310,22 @@ impl Context {
     /// `light_vertices_with` over slices: one result per position in `out`. Normals and
     /// colors, when given, and `out` must have an element per position (else
     /// GL_INVALID_VALUE). Large counts are split across threads.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::vertex::ProcessedVertex, Context};
+    /// use glam::{Vec3, Vec4};
+    /// let mut ctx = Context::new();
+    /// ctx.set_capability(GL_LIGHTING, true)?;
+    /// ctx.set_capability(GL_LIGHT0, true)?;
+    /// let positions = vec![Vec4::new(0.0, 0.0, -1.0, 1.0); 100];
+    /// let normals = vec![Vec3::Z; 100];
+    /// let mut out = vec![ProcessedVertex::default(); 100];
+    /// ctx.light_vertices(&positions, Some(&normals), None, &mut out)?;
+    /// assert!(out.iter().all(|v| (v.colors.front.primary.x - 0.84).abs() < 1e-6));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn light_vertices(
         &mut self,
         positions: &[Vec4],
@@ -223,16 +374,31 @@ const CHUNK_BLOCKS: usize = 16;
 /// secondary).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BulkLayout {
+    /// How many vertices to light.
     pub count: usize,
+    /// The positions: 2, 3 or 4 floats each.
     pub positions: FloatLayout,
+    /// The normals (3 floats), or size 0 for the current normal.
     pub normals: FloatLayout,
+    /// The colors (4 floats), or size 0 for the current color.
     pub colors: FloatLayout,
+    /// Eye position, clip position, front primary, front secondary, back primary and back secondary color, 4 floats each (size 0: not written).
     pub outputs: [FloatLayout; 6],
 }
 
 impl BulkLayout {
     /// GL_INVALID_VALUE for a negative count or stride, a position size other than 2, 3 or
     /// 4, or arrays too large for the address space.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::capture::BulkLayout, GlError};
+    /// let layout = BulkLayout::new(10, 3, [0, 0, 0], [0; 6])?;
+    /// assert_eq!((layout.count, layout.positions.size, layout.positions.stride), (10, 3, 12));
+    /// assert_eq!(BulkLayout::new(10, 5, [0; 3], [0; 6]).err(), Some(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn new(
         count: i32,
         position_size: i32,

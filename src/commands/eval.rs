@@ -23,6 +23,24 @@ fn grid_coordinate(i: i32, n: i32, start: f64, end: f64) -> f64 {
 impl Context {
     /// glMap1{fd} / glMap2{fd} (§5.1). GL_INVALID_OPERATION inside glBegin/glEnd and when the
     /// active texture unit is not GL_TEXTURE0.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// // A line from (0, 0, 0) to (2, 0, 0) over u in [0, 1].
+    /// let points = [0.0f32, 0.0, 0.0, 2.0, 0.0, 0.0];
+    /// ctx.map(GL_MAP1_VERTEX_3, 1, [0.0, 1.0, 0.0, 0.0], [3, 0], [2, 0], &points)?;
+    /// ctx.set_capability(GL_MAP1_VERTEX_3, true)?;
+    /// ctx.capture_begin()?;
+    /// ctx.begin(GL_POINTS)?;
+    /// ctx.eval_coord(1, 0.25, 0.0);
+    /// ctx.end()?;
+    /// ctx.capture_end()?;
+    /// assert_eq!(ctx.captured().vertices()[0].eye.x, 0.5);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn map<T: Into<f64> + Copy>(
         &mut self,
         target: GLenum,
@@ -43,18 +61,51 @@ impl Context {
     }
 
     /// glGetMap{fdi}v.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.map(GL_MAP1_INDEX, 1, [1.0, 3.0, 0.0, 0.0], [1, 0], [2, 0], &[5.0f64, 6.0])?;
+    /// assert_eq!(ctx.get_map(GL_MAP1_INDEX, GL_ORDER)?, [2.0]);
+    /// assert_eq!(ctx.get_map(GL_MAP1_INDEX, GL_DOMAIN)?, [1.0, 3.0]);
+    /// assert_eq!(ctx.get_map(GL_MAP1_INDEX, GL_COEFF)?, [5.0, 6.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_map(&self, target: GLenum, query: GLenum) -> GlResult<Vec<f64>> {
         self.outside_begin_end()?;
         self.maps.get(target, query)
     }
 
     /// glGetMapiv: values rounded to the nearest integer (§6.1.2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// // The initial map: order 1, domain [0, 1], the default normal (0, 0, 1).
+    /// assert_eq!(ctx.get_map_i(GL_MAP1_NORMAL, GL_COEFF)?, [0, 0, 1]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_map_i(&self, target: GLenum, query: GLenum) -> GlResult<Vec<GLint>> {
         let values = self.get_map(target, query)?;
         Ok(values.into_iter().map(|v| v.round() as GLint).collect())
     }
 
     /// glMapGrid1 / glMapGrid2: GL_INVALID_VALUE for a segment count of 0 or less.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.map_grid(1, [4, 0], [0.0, 1.0, 0.0, 0.0])?;
+    /// assert_eq!(ctx.get(GL_MAP1_GRID_SEGMENTS)?.as_ints(), [4]);
+    /// assert_eq!(ctx.map_grid(2, [0, 1], [0.0, 1.0, 0.0, 1.0]), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn map_grid(
         &mut self,
         dimensions: usize,
@@ -77,6 +128,20 @@ impl Context {
     /// vertex map enabled nothing happens. The evaluated color, normal and texture
     /// coordinates replace the current ones for this vertex only: the current values, and
     /// the material color material tracks, stay as they are.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.capture_begin()?;
+    /// ctx.begin(GL_POINTS)?;
+    /// ctx.eval_coord(1, 0.5, 0.0); // no vertex map enabled: nothing happens
+    /// ctx.end()?;
+    /// ctx.capture_end()?;
+    /// assert!(ctx.captured().vertices().is_empty());
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn eval_coord(&mut self, dimensions: usize, u: f64, v: f64) {
         let enabled = self.eval.enabled[dimensions - 1];
         let maps = &self.maps.maps[dimensions - 1];
@@ -125,6 +190,14 @@ impl Context {
     }
 
     /// glEvalCoord{12}{fd}v: GL_INVALID_VALUE for a NULL (empty) vector.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{Context, GlError};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.eval_coord_v::<f32>(2, &[]), Err(GlError::InvalidValue));
+    /// ```
     pub fn eval_coord_v<T: Into<f64> + Copy>(&mut self, dimensions: usize, v: &[T]) -> GlResult {
         let coords = v.get(..dimensions).ok_or(GlError::InvalidValue)?;
         let u = coords[0].into();
@@ -134,6 +207,23 @@ impl Context {
     }
 
     /// glEvalPoint1 / glEvalPoint2: the grid's point (i, j).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.map(GL_MAP1_VERTEX_4, 1, [0.0, 1.0, 0.0, 0.0], [4, 0], [2, 0], &[0.0f32, 0.0, 0.0, 1.0, 4.0, 0.0, 0.0, 1.0])?;
+    /// ctx.set_capability(GL_MAP1_VERTEX_4, true)?;
+    /// ctx.map_grid(1, [4, 0], [0.0, 1.0, 0.0, 0.0])?;
+    /// ctx.capture_begin()?;
+    /// ctx.begin(GL_POINTS)?;
+    /// ctx.eval_point(1, 1, 0); // u = 1/4
+    /// ctx.end()?;
+    /// ctx.capture_end()?;
+    /// assert_eq!(ctx.captured().vertices()[0].eye.x, 1.0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn eval_point(&mut self, dimensions: usize, i: i32, j: i32) {
         let Grid { segments, domain } = self.eval.grids[dimensions - 1];
         let u = grid_coordinate(i, segments[0], domain[0], domain[1]);
@@ -143,6 +233,22 @@ impl Context {
 
     /// glEvalMesh1 (§5.1): GL_POINT or GL_LINE, points i1 to i2 of the grid as GL_POINTS or a
     /// GL_LINE_STRIP.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.map(GL_MAP1_VERTEX_3, 1, [0.0, 1.0, 0.0, 0.0], [3, 0], [2, 0], &[0.0f32, 0.0, 0.0, 1.0, 0.0, 0.0])?;
+    /// ctx.set_capability(GL_MAP1_VERTEX_3, true)?;
+    /// ctx.map_grid(1, [4, 0], [0.0, 1.0, 0.0, 0.0])?;
+    /// ctx.capture_begin()?;
+    /// ctx.eval_mesh1(GL_LINE, 0, 4)?; // a line strip of 5 points
+    /// ctx.capture_end()?;
+    /// assert_eq!(ctx.captured().primitives().len(), 4);
+    /// assert_eq!(ctx.eval_mesh1(GL_FILL, 0, 4), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn eval_mesh1(&mut self, mode: GLenum, i1: i32, i2: i32) -> GlResult {
         self.outside_begin_end()?;
         let primitive = match mode {
@@ -159,6 +265,23 @@ impl Context {
 
     /// glEvalMesh2 (§5.1): GL_FILL as a GL_QUAD_STRIP a grid row, GL_LINE as line strips
     /// along both directions, GL_POINT as points, over grid points (i1..i2, j1..j2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// // A flat 2 x 2 control net: the unit square at z = 0.
+    /// let net = [0.0f32, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0];
+    /// ctx.map(GL_MAP2_VERTEX_3, 2, [0.0, 1.0, 0.0, 1.0], [3, 6], [2, 2], &net)?;
+    /// ctx.set_capability(GL_MAP2_VERTEX_3, true)?;
+    /// ctx.map_grid(2, [2, 2], [0.0, 1.0, 0.0, 1.0])?;
+    /// ctx.capture_begin()?;
+    /// ctx.eval_mesh2(GL_FILL, [0, 2], [0, 2])?; // 2 x 2 cells, two triangles each
+    /// ctx.capture_end()?;
+    /// assert_eq!(ctx.captured().primitives().len(), 8);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn eval_mesh2(&mut self, mode: GLenum, [i1, i2]: [i32; 2], [j1, j2]: [i32; 2]) -> GlResult {
         self.outside_begin_end()?;
         match mode {

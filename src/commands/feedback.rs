@@ -11,6 +11,7 @@ use crate::state::raster::MAX_VIEWPORT_DIMS;
 /// to the address glFeedbackBuffer or glSelectBuffer was given.
 #[derive(Debug, Default, PartialEq)]
 pub struct FinishedFeedback {
+    /// Where the application asked the values to go (glFeedbackBuffer's or glSelectBuffer's pointer); the Rust API ignores it.
     pub address: usize,
     /// Feedback: the values fed back.
     pub values: Vec<f32>,
@@ -20,6 +21,17 @@ pub struct FinishedFeedback {
 
 impl Context {
     /// glViewport: width and height are clamped to GL_MAX_VIEWPORT_DIMS.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.viewport(10, 20, 640, 480)?;
+    /// assert_eq!(ctx.get(GL_VIEWPORT)?.as_ints(), [10, 20, 640, 480]);
+    /// assert_eq!(ctx.viewport(0, 0, -1, 480), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn viewport(&mut self, x: i32, y: i32, width: i32, height: i32) -> GlResult {
         self.outside_begin_end()?;
         if width < 0 || height < 0 {
@@ -35,6 +47,16 @@ impl Context {
     }
 
     /// glDepthRange: both values are clamped to [0, 1].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.depth_range(0.25, 2.0)?;
+    /// assert_eq!(ctx.get(GL_DEPTH_RANGE)?.as_doubles(), [0.25, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn depth_range(&mut self, near: f64, far: f64) -> GlResult {
         self.outside_begin_end()?;
         self.raster.depth_range = [near.clamp(0.0, 1.0), far.clamp(0.0, 1.0)];
@@ -43,6 +65,21 @@ impl Context {
 
     /// glFeedbackBuffer: `address` is where the C layer will write the values; a NULL address
     /// with a positive size is GL_INVALID_VALUE.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.feedback_buffer(16, 0x1234, 1), Err(GlError::InvalidEnum));
+    /// assert_eq!(ctx.feedback_buffer(16, GL_2D, 0), Err(GlError::InvalidValue)); // NULL
+    /// ctx.feedback_buffer(16, GL_2D, 1)?;
+    /// ctx.render_mode(GL_FEEDBACK)?;
+    /// ctx.pass_through(7.0)?;
+    /// let (count, finished) = ctx.render_mode(GL_RENDER)?;
+    /// assert_eq!((count, finished.unwrap().values), (2, vec![GL_PASS_THROUGH_TOKEN as f32, 7.0]));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn feedback_buffer(&mut self, size: i32, kind: GLenum, address: usize) -> GlResult {
         self.outside_begin_end()?;
         if self.render_mode == RenderMode::Feedback {
@@ -62,6 +99,19 @@ impl Context {
 
     /// Where the values of the feedback buffer set last go (the C layer: the application's
     /// memory).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::FeedbackStorage, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.feedback_buffer(8, GL_2D, 1)?;
+    /// ctx.feedback_storage(FeedbackStorage::default()); // kept by the context (what the Rust API uses)
+    /// ctx.render_mode(GL_FEEDBACK)?;
+    /// ctx.pass_through(1.0)?;
+    /// assert_eq!(ctx.render_mode(GL_RENDER)?.1.unwrap().values.len(), 2);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn feedback_storage(&mut self, storage: FeedbackStorage) {
         self.feedback.storage = storage;
     }
@@ -70,6 +120,23 @@ impl Context {
     /// the selection that ends (-1 if either overflowed) and the values for the C layer to
     /// write, or 0 when leaving GL_RENDER. A call in error changes nothing (§2.5): the mode
     /// is checked before the one that ends is touched.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.render_mode(GL_FEEDBACK), Err(GlError::InvalidOperation)); // no buffer yet
+    /// ctx.feedback_buffer(2, GL_2D, 1)?;
+    /// ctx.render_mode(GL_FEEDBACK)?;
+    /// ctx.viewport(0, 0, 10, 10)?;
+    /// ctx.begin(GL_POINTS)?;
+    /// ctx.vertex(glam::Vec4::new(0.0, 0.0, 0.0, 1.0));
+    /// ctx.end()?;
+    /// // Three values do not fit in two: the count is -1 (overflow).
+    /// assert_eq!(ctx.render_mode(GL_RENDER)?.0, -1);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn render_mode(&mut self, mode: GLenum) -> GlResult<(i32, Option<FinishedFeedback>)> {
         self.outside_begin_end()?;
         let new_mode = match mode {
@@ -121,6 +188,19 @@ impl Context {
     }
 
     /// glPassThrough: a GL_PASS_THROUGH_TOKEN in feedback mode, nothing otherwise.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.pass_through(1.0)?; // in GL_RENDER mode: nothing
+    /// ctx.feedback_buffer(8, GL_2D, 1)?;
+    /// ctx.render_mode(GL_FEEDBACK)?;
+    /// ctx.pass_through(2.0)?;
+    /// assert_eq!(ctx.render_mode(GL_RENDER)?.0, 2);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn pass_through(&mut self, value: f32) -> GlResult {
         self.outside_begin_end()?;
         if self.render_mode == RenderMode::Feedback {

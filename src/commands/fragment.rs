@@ -82,6 +82,17 @@ impl Context {
     }
 
     /// glScissor (§4.1.2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.scissor(1, 2, 30, 40)?;
+    /// assert_eq!(ctx.get(GL_SCISSOR_BOX)?.as_ints(), [1, 2, 30, 40]);
+    /// assert_eq!(ctx.scissor(0, 0, -1, 1), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn scissor(&mut self, x: GLint, y: GLint, width: GLsizei, height: GLsizei) -> GlResult {
         self.outside_begin_end()?;
         if width < 0 || height < 0 {
@@ -92,6 +103,17 @@ impl Context {
     }
 
     /// glAlphaFunc (§4.1.4): the reference is clamped to [0, 1].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.alpha_func(GL_GREATER, 2.0)?;
+    /// assert_eq!(ctx.get(GL_ALPHA_TEST_REF)?.as_floats(), [1.0]); // clamped
+    /// assert_eq!(ctx.get(GL_ALPHA_TEST_FUNC)?.as_ints(), [GL_GREATER as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn alpha_func(&mut self, func: GLenum, reference: f32) -> GlResult {
         self.outside_begin_end()?;
         self.color_buffer.alpha_func = comparison_function(func)?;
@@ -100,6 +122,17 @@ impl Context {
     }
 
     /// glStencilFunc (§4.1.5): the reference is clamped to [0, 2^s - 1].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.stencil_func(GL_EQUAL, 300, 0x0f)?;
+    /// assert_eq!(ctx.get(GL_STENCIL_REF)?.as_ints(), [255]); // 8 stencil bits
+    /// assert_eq!(ctx.get(GL_STENCIL_VALUE_MASK)?.as_ints(), [0x0f]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn stencil_func(&mut self, func: GLenum, reference: GLint, mask: GLuint) -> GlResult {
         self.outside_begin_end()?;
         let stencil = &mut self.stencil;
@@ -110,6 +143,17 @@ impl Context {
     }
 
     /// glStencilOp (§4.1.5).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.stencil_op(GL_ZERO, GL_INCR, GL_REPLACE)?;
+    /// assert_eq!(ctx.get(GL_STENCIL_PASS_DEPTH_PASS)?.as_ints(), [GL_REPLACE as i32]);
+    /// assert_eq!(ctx.stencil_op(GL_ZERO, GL_ZERO, GL_LESS), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn stencil_op(&mut self, fail: GLenum, depth_fail: GLenum, depth_pass: GLenum) -> GlResult {
         self.outside_begin_end()?;
         let fail = stencil_operation(fail)?;
@@ -122,6 +166,16 @@ impl Context {
     }
 
     /// glDepthFunc (§4.1.6).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.depth_func(GL_LEQUAL)?;
+    /// assert_eq!(ctx.get(GL_DEPTH_FUNC)?.as_ints(), [GL_LEQUAL as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn depth_func(&mut self, func: GLenum) -> GlResult {
         self.outside_begin_end()?;
         self.depth.func = comparison_function(func)?;
@@ -129,11 +183,32 @@ impl Context {
     }
 
     /// glBlendFunc (§4.1.8): the same factors for RGB and alpha.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA)?;
+    /// assert_eq!(ctx.get(GL_BLEND_SRC_ALPHA)?.as_ints(), [GL_SRC_ALPHA as i32]);
+    /// assert_eq!(ctx.get(GL_BLEND_DST_RGB)?.as_ints(), [GL_ONE_MINUS_SRC_ALPHA as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn blend_func(&mut self, source: GLenum, destination: GLenum) -> GlResult {
         self.blend_func_separate(source, destination, source, destination)
     }
 
     /// glBlendFuncSeparate (§4.1.8): sources, then destinations, in argument order.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.blend_func_separate(GL_ONE, GL_ZERO, GL_SRC_ALPHA, GL_DST_ALPHA)?;
+    /// assert_eq!(ctx.get(GL_BLEND_DST_ALPHA)?.as_ints(), [GL_DST_ALPHA as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn blend_func_separate(
         &mut self,
         source_rgb: GLenum,
@@ -155,6 +230,16 @@ impl Context {
     }
 
     /// glBlendColor (§4.1.8): clamped to [0, 1].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.blend_color(glam::Vec4::new(2.0, 0.5, -1.0, 1.0))?;
+    /// assert_eq!(ctx.get(GL_BLEND_COLOR)?.as_floats(), [1.0, 0.5, 0.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn blend_color(&mut self, color: Vec4) -> GlResult {
         self.outside_begin_end()?;
         self.color_buffer.blend_color = color.clamp(Vec4::ZERO, Vec4::ONE);
@@ -162,6 +247,16 @@ impl Context {
     }
 
     /// glBlendEquation (§4.1.8).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.blend_equation(GL_FUNC_SUBTRACT)?;
+    /// assert_eq!(ctx.get(GL_BLEND_EQUATION)?.as_ints(), [GL_FUNC_SUBTRACT as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn blend_equation(&mut self, mode: GLenum) -> GlResult {
         self.outside_begin_end()?;
         self.color_buffer.blend_equation = blend_equation(mode)?;
@@ -169,6 +264,16 @@ impl Context {
     }
 
     /// glLogicOp (§4.1.10).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.logic_op(GL_XOR)?;
+    /// assert_eq!(ctx.get(GL_LOGIC_OP_MODE)?.as_ints(), [GL_XOR as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn logic_op(&mut self, opcode: GLenum) -> GlResult {
         self.outside_begin_end()?;
         self.color_buffer.logic_op_mode = logic_operation(opcode)?;
@@ -176,6 +281,17 @@ impl Context {
     }
 
     /// glDrawBuffer (§4.2.1).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.draw_buffer(GL_FRONT)?;
+    /// assert_eq!(ctx.get(GL_DRAW_BUFFER)?.as_ints(), [GL_FRONT as i32]);
+    /// assert_eq!(ctx.draw_buffer(GL_LIGHT0), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn draw_buffer(&mut self, mode: GLenum) -> GlResult {
         self.outside_begin_end()?;
         self.color_buffer.draw_buffer = color_buffer(mode, false)?;
@@ -183,6 +299,16 @@ impl Context {
     }
 
     /// glReadBuffer (§4.3.2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.read_buffer(GL_FRONT_LEFT)?;
+    /// assert_eq!(ctx.get(GL_READ_BUFFER)?.as_ints(), [GL_FRONT_LEFT as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn read_buffer(&mut self, mode: GLenum) -> GlResult {
         self.outside_begin_end()?;
         self.pixel_mode.read_buffer = color_buffer(mode, true)?;
@@ -190,6 +316,16 @@ impl Context {
     }
 
     /// glIndexMask (§4.2.2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.index_mask(0xff)?;
+    /// assert_eq!(ctx.get(GL_INDEX_WRITEMASK)?.as_ints(), [0xff]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn index_mask(&mut self, mask: GLuint) -> GlResult {
         self.outside_begin_end()?;
         self.color_buffer.index_write_mask = mask;
@@ -197,6 +333,16 @@ impl Context {
     }
 
     /// glColorMask (§4.2.2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.color_mask([true, false, true, false])?;
+    /// assert_eq!(ctx.get(GL_COLOR_WRITEMASK)?.as_bools(), [true, false, true, false]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn color_mask(&mut self, mask: [bool; 4]) -> GlResult {
         self.outside_begin_end()?;
         self.color_buffer.color_write_mask = mask;
@@ -204,6 +350,16 @@ impl Context {
     }
 
     /// glDepthMask (§4.2.2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.depth_mask(false)?;
+    /// assert_eq!(ctx.get(GL_DEPTH_WRITEMASK)?.as_bools(), [false]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn depth_mask(&mut self, mask: bool) -> GlResult {
         self.outside_begin_end()?;
         self.depth.write_mask = mask;
@@ -211,6 +367,16 @@ impl Context {
     }
 
     /// glStencilMask (§4.2.2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.stencil_mask(0x3)?;
+    /// assert_eq!(ctx.get(GL_STENCIL_WRITEMASK)?.as_ints(), [0x3]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn stencil_mask(&mut self, mask: GLuint) -> GlResult {
         self.outside_begin_end()?;
         self.stencil.write_mask = mask;
@@ -218,6 +384,16 @@ impl Context {
     }
 
     /// glClear (§4.2.3): fflight has no framebuffer, so only the mask is checked.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT)?;
+    /// assert_eq!(ctx.clear(0x1), Err(GlError::InvalidValue)); // a bit naming no buffer
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn clear(&mut self, mask: GLbitfield) -> GlResult {
         self.outside_begin_end()?;
         let buffers =
@@ -229,6 +405,16 @@ impl Context {
     }
 
     /// glClearColor (§4.2.3): clamped to [0, 1].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.clear_color(glam::Vec4::new(0.1, 0.2, 0.3, 2.0))?;
+    /// assert_eq!(ctx.get(GL_COLOR_CLEAR_VALUE)?.as_floats(), [0.1, 0.2, 0.3, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn clear_color(&mut self, color: Vec4) -> GlResult {
         self.outside_begin_end()?;
         self.color_buffer.clear_color = color.clamp(Vec4::ZERO, Vec4::ONE);
@@ -236,6 +422,16 @@ impl Context {
     }
 
     /// glClearIndex (§4.2.3).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.clear_index(4.0)?;
+    /// assert_eq!(ctx.get(GL_INDEX_CLEAR_VALUE)?.as_floats(), [4.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn clear_index(&mut self, index: f32) -> GlResult {
         self.outside_begin_end()?;
         self.color_buffer.clear_index = index;
@@ -243,6 +439,16 @@ impl Context {
     }
 
     /// glClearDepth (§4.2.3): clamped to [0, 1].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.clear_depth(2.0)?;
+    /// assert_eq!(ctx.get(GL_DEPTH_CLEAR_VALUE)?.as_doubles(), [1.0]); // clamped
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn clear_depth(&mut self, depth: f64) -> GlResult {
         self.outside_begin_end()?;
         self.depth.clear_value = depth.clamp(0.0, 1.0);
@@ -250,6 +456,16 @@ impl Context {
     }
 
     /// glClearStencil (§4.2.3).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.clear_stencil(5)?;
+    /// assert_eq!(ctx.get(GL_STENCIL_CLEAR_VALUE)?.as_ints(), [5]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn clear_stencil(&mut self, stencil: GLint) -> GlResult {
         self.outside_begin_end()?;
         self.stencil.clear_value = stencil;
@@ -257,6 +473,16 @@ impl Context {
     }
 
     /// glClearAccum (§4.2.3): clamped to [-1, 1].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.clear_accum(glam::Vec4::new(-2.0, 0.5, 0.0, 3.0))?;
+    /// assert_eq!(ctx.get(GL_ACCUM_CLEAR_VALUE)?.as_floats(), [-1.0, 0.5, 0.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn clear_accum(&mut self, color: Vec4) -> GlResult {
         self.outside_begin_end()?;
         self.accum.clear_value = color.clamp(Vec4::NEG_ONE, Vec4::ONE);
@@ -266,6 +492,15 @@ impl Context {
     /// glAccum (§4.2.4): fflight's framebuffer has no accumulation buffer (GL_ACCUM_*_BITS 0),
     /// so a valid operation is GL_INVALID_OPERATION; the operation is checked first, as Mesa
     /// does.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.accum(GL_ACCUM, 1.0), Err(GlError::InvalidOperation)); // no accumulation buffer
+    /// assert_eq!(ctx.accum(GL_LIGHT0, 1.0), Err(GlError::InvalidEnum));
+    /// ```
     pub fn accum(&mut self, op: GLenum, _value: f32) -> GlResult {
         self.outside_begin_end()?;
         if !(GL_ACCUM..=GL_ADD).contains(&op) {

@@ -40,6 +40,16 @@ fn component_size(entries: &Entries, pname: GLenum, first: GLenum) -> Option<Sta
 impl Context {
     /// The bytes a `width` x `height` rectangle of `format` and `ty` takes under the unpack
     /// (`packing` false) or pack modes; 0 for a format or type no imaging command takes.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// // Two rows of 3 RGB pixels: the first padded to the unpack alignment of 4.
+    /// assert_eq!(ctx.imaging_span(false, GL_RGB, GL_UNSIGNED_BYTE, [3, 2]), 12 + 9);
+    /// assert_eq!(ctx.imaging_span(false, GL_RGB, GL_LIGHT0, [3, 2]), 0);
+    /// ```
     pub fn imaging_span(&self, packing: bool, format: GLenum, ty: GLenum, size: [i32; 2]) -> usize {
         let (Ok(format), Ok(w), Ok(h)) = (
             PixelFormat::new(format, ty),
@@ -98,6 +108,19 @@ impl Context {
     /// glColorTable (§3.6.3): a table of `width` entries (0 or a power of two). A proxy
     /// target only checks: a table too wide leaves the proxy's state zero; the real target
     /// gives GL_TABLE_TOO_LARGE.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// let entries: Vec<u8> = (0..16).map(|i| i * 8).collect();
+    /// ctx.color_table(GL_COLOR_TABLE, GL_RGBA8, 4, GL_RGBA, GL_UNSIGNED_BYTE, &entries)?;
+    /// assert_eq!(ctx.get_color_table_parameter(GL_COLOR_TABLE, GL_COLOR_TABLE_WIDTH)?.as_ints(), [4]);
+    /// // Widths are powers of two.
+    /// assert_eq!(ctx.color_table(GL_COLOR_TABLE, GL_RGBA8, 3, GL_RGBA, GL_UNSIGNED_BYTE, &entries), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn color_table(
         &mut self,
         target: GLenum,
@@ -133,6 +156,18 @@ impl Context {
     }
 
     /// glCopyColorTable: `width` pixels of the (empty) framebuffer.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.copy_color_table(GL_POST_CONVOLUTION_COLOR_TABLE, GL_RGB8, 2)?;
+    /// let mut out = [9u8; 6];
+    /// ctx.get_color_table(GL_POST_CONVOLUTION_COLOR_TABLE, GL_RGB, GL_UNSIGNED_BYTE, &mut out)?;
+    /// assert_eq!(out, [0; 6]); // the empty framebuffer
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn copy_color_table(&mut self, target: GLenum, internal: GLenum, width: i32) -> GlResult {
         self.outside_begin_end()?;
         let (index, proxy) = color_table_target(target)?;
@@ -156,6 +191,20 @@ impl Context {
 
     /// glColorSubTable / glCopyColorSubTable (`bytes` None: the empty framebuffer's pixels):
     /// entries `start` to `start + count`, GL_INVALID_VALUE past the table's end.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.copy_color_table(GL_COLOR_TABLE, GL_RGBA8, 2)?;
+    /// ctx.color_sub_table(GL_COLOR_TABLE, 1, 1, Some((GL_RGBA, GL_UNSIGNED_BYTE, &[255; 4])))?;
+    /// let mut out = [0u8; 8];
+    /// ctx.get_color_table(GL_COLOR_TABLE, GL_RGBA, GL_UNSIGNED_BYTE, &mut out)?;
+    /// assert_eq!(out, [0, 0, 0, 0, 255, 255, 255, 255]);
+    /// assert_eq!(ctx.color_sub_table(GL_COLOR_TABLE, 2, 1, None), Err(GlError::InvalidValue)); // past the end
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn color_sub_table(
         &mut self,
         target: GLenum,
@@ -196,6 +245,17 @@ impl Context {
     }
 
     /// glColorTableParameter{if}v: GL_COLOR_TABLE_SCALE or _BIAS, four values.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.color_table_parameter(GL_COLOR_TABLE, GL_COLOR_TABLE_SCALE, &[2.0, 2.0, 2.0, 1.0])?;
+    /// let scale = ctx.get_color_table_parameter(GL_COLOR_TABLE, GL_COLOR_TABLE_SCALE)?;
+    /// assert_eq!(scale.as_floats(), [2.0, 2.0, 2.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn color_table_parameter(
         &mut self,
         target: GLenum,
@@ -215,6 +275,16 @@ impl Context {
     }
 
     /// glGetColorTableParameter{if}v.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// let format = ctx.get_color_table_parameter(GL_COLOR_TABLE, GL_COLOR_TABLE_FORMAT)?;
+    /// assert_eq!(format.as_ints(), [GL_RGBA as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_color_table_parameter(&self, target: GLenum, pname: GLenum) -> GlResult<StateValue> {
         self.outside_begin_end()?;
         let (index, proxy) = color_table_target(target)?;
@@ -240,6 +310,18 @@ impl Context {
     }
 
     /// glGetColorTable: the entries packed as one row.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.color_table(GL_COLOR_TABLE, GL_LUMINANCE8, 2, GL_LUMINANCE, GL_UNSIGNED_BYTE, &[10, 20])?;
+    /// let mut out = [0u8; 6];
+    /// ctx.get_color_table(GL_COLOR_TABLE, GL_RGB, GL_UNSIGNED_BYTE, &mut out)?;
+    /// assert_eq!(out, [10, 0, 0, 20, 0, 0]); // luminance returned as red, as table 6.1 says
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_color_table(
         &self,
         target: GLenum,
@@ -260,6 +342,19 @@ impl Context {
     /// glConvolutionFilter1D / 2D (`dimensions`), glCopyConvolutionFilter1D / 2D (`source`
     /// None) and glSeparableFilter2D (`column` Some): GL_INVALID_VALUE beyond
     /// GL_MAX_CONVOLUTION_WIDTH / _HEIGHT.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// let weights: Vec<u8> = [0.25f32, 0.5, 0.25].iter().flat_map(|w| w.to_ne_bytes()).collect();
+    /// ctx.convolution_filter(GL_CONVOLUTION_1D, GL_LUMINANCE, [3, 1], Some((GL_LUMINANCE, GL_FLOAT, &weights)), None)?;
+    /// assert_eq!(ctx.get_convolution_parameter(GL_CONVOLUTION_1D, GL_CONVOLUTION_WIDTH)?.as_ints(), [3]);
+    /// // At most GL_MAX_CONVOLUTION_WIDTH (9).
+    /// assert_eq!(ctx.convolution_filter(GL_CONVOLUTION_1D, GL_LUMINANCE, [10, 1], None, None), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn convolution_filter(
         &mut self,
         target: GLenum,
@@ -318,8 +413,19 @@ impl Context {
         Ok(())
     }
 
-    /// glConvolutionParameter{if}[v]: the border mode (scalar or vector), the border color,
+    /// glConvolutionParameter{if}\[v\]: the border mode (scalar or vector), the border color,
     /// the filter scale and bias (vector only).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.convolution_parameter(GL_CONVOLUTION_2D, GL_CONVOLUTION_BORDER_MODE, &[GL_CONSTANT_BORDER as f32], false)?;
+    /// let mode = ctx.get_convolution_parameter(GL_CONVOLUTION_2D, GL_CONVOLUTION_BORDER_MODE)?;
+    /// assert_eq!(mode.as_ints(), [GL_CONSTANT_BORDER as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn convolution_parameter(
         &mut self,
         target: GLenum,
@@ -357,6 +463,16 @@ impl Context {
     }
 
     /// glGetConvolutionParameter{if}v.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// let border = ctx.get_convolution_parameter(GL_SEPARABLE_2D, GL_CONVOLUTION_BORDER_MODE)?;
+    /// assert_eq!(border.as_ints(), [GL_REDUCE as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_convolution_parameter(&self, target: GLenum, pname: GLenum) -> GlResult<StateValue> {
         self.outside_begin_end()?;
         let index = convolution_target(target)?;
@@ -378,6 +494,18 @@ impl Context {
     }
 
     /// glGetConvolutionFilter (1D and 2D filters).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.convolution_filter(GL_CONVOLUTION_2D, GL_RGB8, [1, 1], Some((GL_RGB, GL_UNSIGNED_BYTE, &[1, 2, 3])), None)?;
+    /// let mut out = [0u8; 3];
+    /// ctx.get_convolution_filter(GL_CONVOLUTION_2D, GL_RGB, GL_UNSIGNED_BYTE, &mut out)?;
+    /// assert_eq!(out, [1, 2, 3]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_convolution_filter(
         &self,
         target: GLenum,
@@ -396,6 +524,18 @@ impl Context {
     }
 
     /// glGetSeparableFilter: the row and the column.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.convolution_filter(GL_SEPARABLE_2D, GL_LUMINANCE8, [2, 1], Some((GL_LUMINANCE, GL_UNSIGNED_BYTE, &[1, 2])), Some(&[3]))?;
+    /// let (mut row, mut column) = ([0u8; 2], [0u8; 1]);
+    /// ctx.get_separable_filter(GL_SEPARABLE_2D, GL_LUMINANCE, GL_UNSIGNED_BYTE, &mut row, &mut column)?;
+    /// assert_eq!((row, column), ([1, 2], [3]));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_separable_filter(
         &self,
         target: GLenum,
@@ -424,6 +564,17 @@ impl Context {
     }
 
     /// glHistogram (§3.6.3): a width of 0 or a power of two, no intensity format.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.histogram(GL_HISTOGRAM, 8, GL_RGBA, false)?;
+    /// assert_eq!(ctx.get_histogram_parameter(GL_HISTOGRAM, GL_HISTOGRAM_WIDTH)?.as_ints(), [8]);
+    /// assert_eq!(ctx.histogram(GL_HISTOGRAM, 8, GL_INTENSITY, false), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn histogram(
         &mut self,
         target: GLenum,
@@ -453,6 +604,16 @@ impl Context {
     }
 
     /// glResetHistogram: every count 0.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.reset_histogram(GL_HISTOGRAM)?;
+    /// assert_eq!(ctx.reset_histogram(GL_PROXY_HISTOGRAM), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn reset_histogram(&mut self, target: GLenum) -> GlResult {
         self.outside_begin_end()?;
         if target != GL_HISTOGRAM {
@@ -463,6 +624,18 @@ impl Context {
     }
 
     /// glGetHistogram: the counts packed as a row (then reset if asked).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.histogram(GL_HISTOGRAM, 2, GL_LUMINANCE, false)?;
+    /// let mut counts = [9u8; 8];
+    /// ctx.get_histogram(GL_HISTOGRAM, true, GL_LUMINANCE, GL_UNSIGNED_INT, &mut counts)?;
+    /// assert_eq!(counts, [0; 8]); // no pixel rectangle ever reaches it
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_histogram(
         &mut self,
         target: GLenum,
@@ -485,6 +658,15 @@ impl Context {
     }
 
     /// glGetHistogramParameter{if}v.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.get_histogram_parameter(GL_HISTOGRAM, GL_HISTOGRAM_SINK)?.as_bools(), [false]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_histogram_parameter(&self, target: GLenum, pname: GLenum) -> GlResult<StateValue> {
         self.outside_begin_end()?;
         let histogram = match target {
@@ -506,6 +688,17 @@ impl Context {
     }
 
     /// glMinmax: no intensity format.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.minmax(GL_MINMAX, GL_RGB, true)?;
+    /// assert_eq!(ctx.get_minmax_parameter(GL_MINMAX, GL_MINMAX_SINK)?.as_bools(), [true]);
+    /// assert_eq!(ctx.minmax(GL_MINMAX, GL_INTENSITY, false), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn minmax(&mut self, target: GLenum, internal: GLenum, sink: bool) -> GlResult {
         self.outside_begin_end()?;
         if target != GL_MINMAX {
@@ -520,6 +713,15 @@ impl Context {
     }
 
     /// glResetMinmax: the minimum the largest representable value, the maximum the smallest.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.reset_minmax(GL_MINMAX)?;
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn reset_minmax(&mut self, target: GLenum) -> GlResult {
         self.outside_begin_end()?;
         if target != GL_MINMAX {
@@ -533,6 +735,19 @@ impl Context {
 
     /// glGetMinmax: the minimum then the maximum, packed as a row of two (then reset if
     /// asked).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// let mut out = [0u8; 8];
+    /// ctx.get_minmax(GL_MINMAX, false, GL_LUMINANCE, GL_FLOAT, &mut out)?;
+    /// let min = f32::from_ne_bytes(out[..4].try_into().unwrap());
+    /// let max = f32::from_ne_bytes(out[4..].try_into().unwrap());
+    /// assert!(min > max); // reset, and nothing reached it since
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_minmax(
         &mut self,
         target: GLenum,
@@ -555,6 +770,15 @@ impl Context {
     }
 
     /// glGetMinmaxParameter{if}v.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.get_minmax_parameter(GL_MINMAX, GL_MINMAX_FORMAT)?.as_ints(), [GL_RGBA as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_minmax_parameter(&self, target: GLenum, pname: GLenum) -> GlResult<StateValue> {
         self.outside_begin_end()?;
         if target != GL_MINMAX {
@@ -571,6 +795,16 @@ impl Context {
 
 impl Context {
     /// The bytes glGetColorTable writes (0 for a bad target, format or type).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.copy_color_table(GL_COLOR_TABLE, GL_RGBA8, 4)?;
+    /// assert_eq!(ctx.color_table_pack_span(GL_COLOR_TABLE, GL_RGBA, GL_UNSIGNED_BYTE), 16);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn color_table_pack_span(&self, target: GLenum, format: GLenum, ty: GLenum) -> usize {
         let width = COLOR_TABLES
             .iter()
@@ -581,6 +815,18 @@ impl Context {
 
     /// The bytes glGetConvolutionFilter writes (`part` 0), or glGetSeparableFilter's row (1)
     /// and column (2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// let (row, column) = (vec![0u8; 3 * 16], vec![0u8; 2 * 16]);
+    /// ctx.convolution_filter(GL_SEPARABLE_2D, GL_RGBA, [3, 2], Some((GL_RGBA, GL_FLOAT, &row)), Some(&column))?;
+    /// assert_eq!(ctx.filter_pack_span(GL_SEPARABLE_2D, GL_RGBA, GL_FLOAT, 1), 3 * 16); // the row
+    /// assert_eq!(ctx.filter_pack_span(GL_SEPARABLE_2D, GL_RGBA, GL_FLOAT, 2), 2 * 16); // the column
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn filter_pack_span(
         &self,
         target: GLenum,
@@ -601,6 +847,16 @@ impl Context {
     }
 
     /// The bytes glGetHistogram writes.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.histogram(GL_HISTOGRAM, 16, GL_RGBA, false)?;
+    /// assert_eq!(ctx.histogram_pack_span(GL_RGBA, GL_UNSIGNED_SHORT), 16 * 8);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn histogram_pack_span(&self, format: GLenum, ty: GLenum) -> usize {
         let width = self.imaging.histogram.entries.size[0] as i32;
         self.imaging_span(true, format, ty, [width, 1])

@@ -62,6 +62,20 @@ fn require_scalar(count: usize) -> GlResult {
 
 impl Context {
     /// glLightfv (§2.14.1): positions and spot directions go through the current modelview.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.light(GL_LIGHT1, GL_DIFFUSE, &[1.0, 0.5, 0.25, 1.0])?;
+    /// assert_eq!(ctx.get_light(GL_LIGHT1, GL_DIFFUSE)?.0.to_array(), [1.0, 0.5, 0.25, 1.0]);
+    /// // Positions are taken into eye coordinates by the current modelview matrix.
+    /// ctx.translate(0.0, 0.0, -5.0)?;
+    /// ctx.light(GL_LIGHT1, GL_POSITION, &[0.0, 0.0, 0.0, 1.0])?;
+    /// assert_eq!(ctx.get_light(GL_LIGHT1, GL_POSITION)?.0.to_array(), [0.0, 0.0, -5.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn light(&mut self, light: GLenum, pname: GLenum, params: &[f32]) -> GlResult {
         self.outside_begin_end()?;
         let index = light_index(light)?;
@@ -71,6 +85,19 @@ impl Context {
     }
 
     /// glLightiv: colors map linearly from the signed integer range, the rest converts directly.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// // Integer colors map [-2^31, 2^31 - 1] linearly to [-1, 1] (table 2.9).
+    /// ctx.light_i(GL_LIGHT0, GL_AMBIENT, &[i32::MAX, i32::MIN, 0, i32::MAX])?;
+    /// let ambient = ctx.get_light(GL_LIGHT0, GL_AMBIENT)?.0;
+    /// assert_eq!((ambient.x, ambient.y, ambient.w), (1.0, -1.0, 1.0));
+    /// assert!(ambient.z.abs() < 1e-9);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn light_i(&mut self, light: GLenum, pname: GLenum, params: &[i32]) -> GlResult {
         self.outside_begin_end()?;
         let index = light_index(light)?;
@@ -80,6 +107,20 @@ impl Context {
     }
 
     /// glLightf / glLighti: single-valued parameters only.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.light_scalar(GL_LIGHT0, GL_SPOT_CUTOFF, 45.0)?;
+    /// assert_eq!(ctx.get_light(GL_LIGHT0, GL_SPOT_CUTOFF)?, (glam::Vec4::new(45.0, 0.0, 0.0, 0.0), 1));
+    /// // A cutoff outside [0, 90] other than 180 is an error, the value unchanged.
+    /// assert_eq!(ctx.light_scalar(GL_LIGHT0, GL_SPOT_CUTOFF, 100.0), Err(GlError::InvalidValue));
+    /// // A vector parameter is not a scalar one.
+    /// assert_eq!(ctx.light_scalar(GL_LIGHT0, GL_POSITION, 1.0), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn light_scalar(&mut self, light: GLenum, pname: GLenum, param: f32) -> GlResult {
         self.outside_begin_end()?;
         let index = light_index(light)?;
@@ -95,6 +136,17 @@ impl Context {
     }
 
     /// glGetLightfv: the values and how many of them the pname defines.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// // GL_LIGHT0's specular color is white, the other lights' black; 4 values.
+    /// assert_eq!(ctx.get_light(GL_LIGHT0, GL_SPECULAR)?, (glam::Vec4::ONE, 4));
+    /// assert_eq!(ctx.get_light(GL_LIGHT1, GL_SPECULAR)?.0, glam::Vec4::new(0.0, 0.0, 0.0, 1.0));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_light(&self, light: GLenum, pname: GLenum) -> GlResult<(Vec4, usize)> {
         self.outside_begin_end()?;
         let index = light_index(light)?;
@@ -103,6 +155,16 @@ impl Context {
     }
 
     /// glGetLightiv.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// let (values, count) = ctx.get_light_i(GL_LIGHT0, GL_DIFFUSE)?;
+    /// assert_eq!((values, count), ([i32::MAX; 4], 4));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_light_i(&self, light: GLenum, pname: GLenum) -> GlResult<([i32; 4], usize)> {
         let (values, count) = self.get_light(light, pname)?;
         Ok((floats_to_ints(values, is_light_color(pname)), count))
@@ -110,6 +172,16 @@ impl Context {
 
     /// glMaterialfv (§2.14.1), legal between glBegin and glEnd. Properties that an enabled
     /// color material tracks are left alone, as Mesa does.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.material(GL_FRONT_AND_BACK, GL_DIFFUSE, &[0.2, 0.4, 0.6, 1.0])?;
+    /// assert_eq!(ctx.get_material(GL_BACK, GL_DIFFUSE)?.0.to_array(), [0.2, 0.4, 0.6, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn material(&mut self, face: GLenum, pname: GLenum, params: &[f32]) -> GlResult {
         let faces = faces(face)?;
         let count = material_param_count(pname).ok_or(GlError::InvalidEnum)?;
@@ -118,6 +190,16 @@ impl Context {
     }
 
     /// glMaterialiv.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.material_i(GL_FRONT, GL_SHININESS, &[64])?;
+    /// assert_eq!(ctx.get_material(GL_FRONT, GL_SHININESS)?, (glam::Vec4::new(64.0, 0.0, 0.0, 0.0), 1));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn material_i(&mut self, face: GLenum, pname: GLenum, params: &[i32]) -> GlResult {
         let faces = faces(face)?;
         let count = material_param_count(pname).ok_or(GlError::InvalidEnum)?;
@@ -126,6 +208,17 @@ impl Context {
     }
 
     /// glMaterialf / glMateriali: GL_SHININESS only.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.material_scalar(GL_FRONT, GL_SHININESS, 32.0)?;
+    /// assert_eq!(ctx.material_scalar(GL_FRONT, GL_SHININESS, 200.0), Err(GlError::InvalidValue));
+    /// assert_eq!(ctx.get_material(GL_FRONT, GL_SHININESS)?.0.x, 32.0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn material_scalar(&mut self, face: GLenum, pname: GLenum, param: f32) -> GlResult {
         let faces = faces(face)?;
         require_scalar(material_param_count(pname).ok_or(GlError::InvalidEnum)?)?;
@@ -151,6 +244,17 @@ impl Context {
     }
 
     /// glGetMaterialfv: GL_FRONT or GL_BACK only.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.get_material(GL_FRONT, GL_AMBIENT)?.0, glam::Vec4::new(0.2, 0.2, 0.2, 1.0));
+    /// // A query names one face.
+    /// assert_eq!(ctx.get_material(GL_FRONT_AND_BACK, GL_AMBIENT), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_material(&self, face: GLenum, pname: GLenum) -> GlResult<(Vec4, usize)> {
         self.outside_begin_end()?;
         let face = match face {
@@ -166,12 +270,33 @@ impl Context {
     }
 
     /// glGetMaterialiv.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.material(GL_FRONT, GL_EMISSION, &[1.0, 0.0, 0.0, 1.0])?;
+    /// assert_eq!(ctx.get_material_i(GL_FRONT, GL_EMISSION)?.0, [i32::MAX, 0, 0, i32::MAX]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_material_i(&self, face: GLenum, pname: GLenum) -> GlResult<([i32; 4], usize)> {
         let (values, count) = self.get_material(face, pname)?;
         Ok((floats_to_ints(values, is_material_color(pname)), count))
     }
 
     /// glLightModelfv.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.light_model(GL_LIGHT_MODEL_AMBIENT, &[0.1, 0.1, 0.1, 1.0])?;
+    /// ctx.light_model(GL_LIGHT_MODEL_LOCAL_VIEWER, &[1.0])?;
+    /// assert!(ctx.derived().lighting.local_viewer);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn light_model(&mut self, pname: GLenum, params: &[f32]) -> GlResult {
         self.outside_begin_end()?;
         let count = light_model_param_count(pname).ok_or(GlError::InvalidEnum)?;
@@ -180,6 +305,15 @@ impl Context {
     }
 
     /// glLightModeliv: the ambient color maps linearly, the rest converts directly.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.light_model_i(GL_LIGHT_MODEL_COLOR_CONTROL, &[GL_SEPARATE_SPECULAR_COLOR as i32])?;
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn light_model_i(&mut self, pname: GLenum, params: &[i32]) -> GlResult {
         self.outside_begin_end()?;
         let count = light_model_param_count(pname).ok_or(GlError::InvalidEnum)?;
@@ -188,6 +322,17 @@ impl Context {
     }
 
     /// glLightModelf / glLightModeli: single-valued parameters only.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.light_model_scalar(GL_LIGHT_MODEL_TWO_SIDE, 1.0)?;
+    /// // GL_LIGHT_MODEL_AMBIENT has four values: not a scalar parameter.
+    /// assert_eq!(ctx.light_model_scalar(GL_LIGHT_MODEL_AMBIENT, 0.5), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn light_model_scalar(&mut self, pname: GLenum, param: f32) -> GlResult {
         self.outside_begin_end()?;
         require_scalar(light_model_param_count(pname).ok_or(GlError::InvalidEnum)?)?;
@@ -201,6 +346,17 @@ impl Context {
     }
 
     /// glColorMaterial (§2.14.3).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.color_material(GL_FRONT, GL_DIFFUSE)?;
+    /// ctx.set_capability(GL_COLOR_MATERIAL, true)?;
+    /// assert_eq!(ctx.color_material(GL_FRONT, GL_SHININESS), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn color_material(&mut self, face: GLenum, mode: GLenum) -> GlResult {
         self.outside_begin_end()?;
         faces(face)?;
@@ -213,6 +369,17 @@ impl Context {
     }
 
     /// glEnable / glDisable.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.set_capability(GL_LIGHT7, true)?;
+    /// assert!(ctx.is_enabled(GL_LIGHT7)?);
+    /// assert_eq!(ctx.set_capability(GL_LIGHT0 + 8, true), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set_capability(&mut self, cap: GLenum, enabled: bool) -> GlResult {
         self.outside_begin_end()?;
         if self.arrays.is_enabled(cap).is_some() {
@@ -254,6 +421,17 @@ impl Context {
     }
 
     /// glIsEnabled.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// assert!(!ctx.is_enabled(GL_NORMALIZE)?);
+    /// ctx.set_capability(GL_NORMALIZE, true)?;
+    /// assert!(ctx.is_enabled(GL_NORMALIZE)?);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn is_enabled(&self, cap: GLenum) -> GlResult<bool> {
         self.outside_begin_end()?;
         if let Some(enabled) = self.arrays.is_enabled(cap) {

@@ -34,11 +34,17 @@ pub enum Command {
     /// A command whose arguments failed its checks at compile time: the error, raised when
     /// the list executes.
     Error(GlError),
+    /// glColor (every form, converted to floats at compile time).
     Color(Vec4),
+    /// glNormal.
     Normal(Vec3),
+    /// glTexCoord.
     TexCoord(Vec4),
+    /// glEdgeFlag.
     EdgeFlag(bool),
+    /// glVertex.
     Vertex(Vec4),
+    /// glRasterPos.
     RasterPos(Vec4),
     /// glCallLists: its offsets, decoded at compile time; the list base is the one in force
     /// when the list executes.
@@ -55,21 +61,39 @@ pub enum Command {
 /// An image command of a display list.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ImageCommand {
+    /// glTexImage1D/2D/3D: the dimension count and the arguments.
     TexImage(usize, TexImageArgs),
+    /// glTexSubImage1D/2D/3D: the dimension count and the arguments.
     TexSubImage(usize, SubImageArgs),
+    /// glPolygonStipple.
     PolygonStipple,
 }
 
 /// An image command with its client bytes and the unpack modes they were given under.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RecordedImage {
+    /// Which command.
     pub command: ImageCommand,
+    /// The unpack modes in force at compile time.
     pub unpack: PixelStoreModes,
+    /// The client bytes the command read at compile time.
     pub bytes: Vec<u8>,
 }
 
 impl ImageCommand {
     /// Runs the command on `bytes` with the current unpack modes.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::ImageCommand, Context};
+    /// let mut ctx = Context::new();
+    /// ImageCommand::PolygonStipple.run(&mut ctx, &[0u8; 128])?;
+    /// let mut back = [1u8; 128];
+    /// ctx.get_polygon_stipple(&mut back)?;
+    /// assert_eq!(back, [0; 128]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn run(&self, ctx: &mut Context, bytes: &[u8]) -> GlResult {
         match self {
             ImageCommand::TexImage(dimensions, args) => ctx.tex_image(*dimensions, args, bytes),
@@ -84,6 +108,23 @@ impl ImageCommand {
 impl Context {
     /// Runs an image command now, or records it with a copy of `bytes` and the unpack modes
     /// while a list is being compiled.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::ImageCommand, gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(1, GL_COMPILE)?;
+    /// ctx.run_image_command(ImageCommand::PolygonStipple, &[0u8; 128])?; // recorded with its bytes
+    /// ctx.end_list()?;
+    /// let mut stipple = [0u8; 128];
+    /// ctx.get_polygon_stipple(&mut stipple)?;
+    /// assert_eq!(stipple, [0xff; 128]); // not run yet
+    /// ctx.call_list(1)?;
+    /// ctx.get_polygon_stipple(&mut stipple)?;
+    /// assert_eq!(stipple, [0; 128]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn run_image_command(&mut self, command: ImageCommand, bytes: &[u8]) -> GlResult {
         let unpack = self.pixel_store.unpack.clone();
         if self.record(|| {
@@ -107,6 +148,17 @@ impl From<TableCommand> for Command {
 
 impl Command {
     /// Runs the command as its entry point would.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::Command, gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// Command::Color(glam::Vec4::new(0.0, 1.0, 0.0, 1.0)).execute(&mut ctx)?;
+    /// assert_eq!(ctx.get(GL_CURRENT_COLOR)?.as_floats(), [0.0, 1.0, 0.0, 1.0]);
+    /// assert_eq!(Command::Error(GlError::InvalidValue).execute(&mut ctx), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn execute(&self, ctx: &mut Context) -> GlResult {
         match self {
             Command::Table(command) => command.execute(ctx),
@@ -174,16 +226,50 @@ pub struct DisplayLists {
 
 impl DisplayLists {
     /// GL_LIST_INDEX: the list being compiled, 0 for none.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.display_lists().index(), 0);
+    /// ctx.new_list(3, GL_COMPILE)?;
+    /// assert_eq!(ctx.display_lists().index(), 3);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn index(&self) -> u32 {
         self.compiling.as_ref().map_or(0, |c| c.name)
     }
 
     /// GL_LIST_MODE: the mode of the list being compiled, 0 for none.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(3, GL_COMPILE_AND_EXECUTE)?;
+    /// assert_eq!(ctx.display_lists().mode(), GL_COMPILE_AND_EXECUTE);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn mode(&self) -> GLenum {
         self.compiling.as_ref().map_or(0, |c| c.mode)
     }
 
     /// The commands of list `name`, if it exists.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::Command, gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(2, GL_COMPILE)?;
+    /// ctx.record_or_run(Command::EdgeFlag(false))?;
+    /// ctx.end_list()?;
+    /// assert_eq!(ctx.display_lists().get(2), Some(&[Command::EdgeFlag(false)][..]));
+    /// assert_eq!(ctx.display_lists().get(3), None);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get(&self, name: u32) -> Option<&[Command]> {
         self.lists.get(&name).map(|list| &list[..])
     }
@@ -215,6 +301,14 @@ impl DisplayLists {
 }
 
 /// Bytes per name of glCallLists' `type`; `None` for a type it does not take.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{commands::list::call_lists_type_size, gl::*};
+/// assert_eq!(call_lists_type_size(GL_3_BYTES), Some(3));
+/// assert_eq!(call_lists_type_size(GL_DOUBLE), None);
+/// ```
 pub fn call_lists_type_size(list_type: GLenum) -> Option<usize> {
     match list_type {
         GL_BYTE | GL_UNSIGNED_BYTE => Some(1),
@@ -226,6 +320,14 @@ pub fn call_lists_type_size(list_type: GLenum) -> Option<usize> {
 }
 
 /// How many bytes glCallLists reads: 0 where its arguments define none.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{commands::list::call_lists_bytes, gl::*};
+/// assert_eq!(call_lists_bytes(5, GL_SHORT), 10);
+/// assert_eq!(call_lists_bytes(-1, GL_SHORT), 0);
+/// ```
 pub fn call_lists_bytes(n: i32, list_type: GLenum) -> usize {
     call_lists_type_size(list_type).unwrap_or(0) * usize::try_from(n).unwrap_or(0)
 }
@@ -248,11 +350,34 @@ fn decode_offset(list_type: GLenum, b: &[u8]) -> u32 {
 
 impl Context {
     /// The display lists.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(4, GL_COMPILE)?;
+    /// assert_eq!((ctx.display_lists().index(), ctx.display_lists().mode()), (4, GL_COMPILE));
+    /// ctx.end_list()?;
+    /// assert_eq!(ctx.display_lists().get(4), Some(&[][..]));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn display_lists(&self) -> &DisplayLists {
         &self.lists
     }
 
     /// Whether a list is being compiled.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// assert!(!ctx.compiling_list());
+    /// ctx.new_list(1, GL_COMPILE)?;
+    /// assert!(ctx.compiling_list());
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn compiling_list(&self) -> bool {
         self.lists.compiling.is_some()
     }
@@ -260,6 +385,19 @@ impl Context {
     /// While a list is being compiled, appends the command `make` builds to it. Returns true
     /// when the command must not also run now (GL_COMPILE); false when it runs (not
     /// compiling, or GL_COMPILE_AND_EXECUTE). Every compiled entry point calls this first.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::Command, gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(1, GL_COMPILE)?;
+    /// assert!(ctx.record(|| Command::EdgeFlag(false))); // recorded, not to be run
+    /// ctx.end_list()?;
+    /// assert!(!ctx.record(|| Command::EdgeFlag(false))); // not compiling: run it
+    /// assert_eq!(ctx.display_lists().get(1).map(<[_]>::len), Some(1));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn record(&mut self, make: impl FnOnce() -> Command) -> bool {
         match &mut self.lists.compiling {
             None => false,
@@ -272,6 +410,19 @@ impl Context {
 
     /// `record` for a command built from the application's data, whose checks may fail:
     /// their error is recorded in its place (raised when the list executes).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::Command, gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(1, GL_COMPILE)?;
+    /// // A check that fails at compile time is recorded as its error.
+    /// assert!(ctx.record_checked(|_| Err(GlError::InvalidValue)));
+    /// ctx.end_list()?;
+    /// assert_eq!(ctx.display_lists().get(1), Some(&[Command::Error(GlError::InvalidValue)][..]));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn record_checked(&mut self, make: impl FnOnce(&Context) -> GlResult<Command>) -> bool {
         if !self.compiling_list() {
             return false;
@@ -281,6 +432,16 @@ impl Context {
     }
 
     /// Records `command` while compiling, and runs it unless the mode is GL_COMPILE.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::list::Command, gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.record_or_run(Command::Normal(glam::Vec3::X))?; // not compiling: runs
+    /// assert_eq!(ctx.get(GL_CURRENT_NORMAL)?.as_floats(), [1.0, 0.0, 0.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn record_or_run(&mut self, command: Command) -> GlResult {
         if self.record(|| command.clone()) {
             return Ok(());
@@ -289,6 +450,23 @@ impl Context {
     }
 
     /// glNewList, in Mesa's order of checks.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{capi::TableCommand, gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// let list = ctx.gen_lists(1)?;
+    /// ctx.new_list(list, GL_COMPILE)?;
+    /// assert!(ctx.compiling_list());
+    /// // The C entry points record themselves; from Rust, record the command.
+    /// ctx.record_or_run(TableCommand::glEnable { cap: GL_LIGHTING }.into())?;
+    /// ctx.end_list()?;
+    /// assert!(!ctx.is_enabled(GL_LIGHTING)?); // compiled, not run
+    /// ctx.call_list(list)?;
+    /// assert!(ctx.is_enabled(GL_LIGHTING)?);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn new_list(&mut self, name: u32, mode: GLenum) -> GlResult {
         self.outside_begin_end()?;
         if name == 0 {
@@ -309,6 +487,19 @@ impl Context {
     }
 
     /// glEndList: only now does the list replace the one of its name.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.end_list(), Err(GlError::InvalidOperation)); // no list being compiled
+    /// ctx.new_list(1, GL_COMPILE_AND_EXECUTE)?;
+    /// assert_eq!(ctx.get(GL_LIST_INDEX)?.as_ints(), [1]);
+    /// ctx.end_list()?;
+    /// assert!(ctx.is_list(1)?);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn end_list(&mut self) -> GlResult {
         self.outside_begin_end()?;
         let list = self
@@ -322,6 +513,17 @@ impl Context {
 
     /// glGenLists: `range` contiguous unused names, each made an empty list; 0 when there
     /// is no such block or `range` is 0.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::Context;
+    /// let mut ctx = Context::new();
+    /// let first = ctx.gen_lists(3)?;
+    /// assert!(first > 0 && ctx.is_list(first + 2)?);
+    /// assert_eq!(ctx.gen_lists(0)?, 0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn gen_lists(&mut self, range: i32) -> GlResult<u32> {
         self.outside_begin_end()?;
         let count = u32::try_from(range).map_err(|_| GlError::InvalidValue)?;
@@ -338,6 +540,17 @@ impl Context {
     }
 
     /// glDeleteLists: names without a list are ignored.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::Context;
+    /// let mut ctx = Context::new();
+    /// let first = ctx.gen_lists(2)?;
+    /// ctx.delete_lists(first, 2)?;
+    /// assert!(!ctx.is_list(first)?);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn delete_lists(&mut self, first: u32, range: i32) -> GlResult {
         self.outside_begin_end()?;
         let count = u64::try_from(range).map_err(|_| GlError::InvalidValue)?;
@@ -357,12 +570,31 @@ impl Context {
     }
 
     /// glIsList.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::Context;
+    /// let ctx = Context::new();
+    /// assert!(!ctx.is_list(1)?);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn is_list(&self, name: u32) -> GlResult<bool> {
         self.outside_begin_end()?;
         Ok(self.lists.lists.contains_key(&name))
     }
 
     /// glListBase.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.list_base(100)?;
+    /// assert_eq!(ctx.get(GL_LIST_BASE)?.as_ints(), [100]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn list_base(&mut self, base: u32) -> GlResult {
         self.outside_begin_end()?;
         self.lists.base = base;
@@ -371,6 +603,15 @@ impl Context {
 
     /// glCallList: legal between glBegin and glEnd (§2.6.3); a name without a list does
     /// nothing.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::Context;
+    /// let mut ctx = Context::new();
+    /// ctx.call_list(42)?; // no such list: nothing happens
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn call_list(&mut self, name: u32) -> GlResult {
         if name == 0 {
             return Err(GlError::InvalidValue);
@@ -381,6 +622,18 @@ impl Context {
 
     /// glCallLists' checks and offsets, from the `lists` bytes of its `n` names of
     /// `list_type` (GL_INVALID_ENUM for a bad type, even when `n` is 0, as Mesa).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let ctx = Context::new();
+    /// // Two GL_UNSIGNED_SHORT names, in native byte order.
+    /// let bytes: Vec<u8> = [3u16, 5].iter().flat_map(|n| n.to_ne_bytes()).collect();
+    /// assert_eq!(ctx.call_lists_offsets(2, GL_UNSIGNED_SHORT, &bytes)?, [3, 5]);
+    /// assert_eq!(ctx.call_lists_offsets(0, GL_DOUBLE, &[]), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn call_lists_offsets(
         &self,
         n: i32,
@@ -400,6 +653,20 @@ impl Context {
     }
 
     /// glCallLists.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{capi::TableCommand, gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.new_list(11, GL_COMPILE)?;
+    /// ctx.record_or_run(TableCommand::glEnable { cap: GL_NORMALIZE }.into())?;
+    /// ctx.end_list()?;
+    /// ctx.list_base(10)?;
+    /// ctx.call_lists(1, GL_UNSIGNED_BYTE, &[1])?; // list 10 + 1
+    /// assert!(ctx.is_enabled(GL_NORMALIZE)?);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn call_lists(&mut self, n: i32, list_type: GLenum, lists: &[u8]) -> GlResult {
         let offsets = self.call_lists_offsets(n, list_type, lists)?;
         self.call_list_offsets(&offsets);

@@ -24,6 +24,19 @@ impl Context {
     /// glTexGen{ifd}v (§2.11.4) on the active texture unit: Mesa's order of checks (the
     /// coordinate, the pname, the values). An eye plane is taken into eye coordinates by the
     /// inverse of the current modelview matrix.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.tex_gen(GL_S, GL_TEXTURE_GEN_MODE, &[GL_SPHERE_MAP as f64])?;
+    /// assert_eq!(ctx.get_tex_gen(GL_S, GL_TEXTURE_GEN_MODE)?, [GL_SPHERE_MAP as f64]);
+    /// // The sphere map gives s and t only.
+    /// assert_eq!(ctx.tex_gen(GL_R, GL_TEXTURE_GEN_MODE, &[GL_SPHERE_MAP as f64]), Err(GlError::InvalidEnum));
+    /// ctx.tex_gen(GL_T, GL_OBJECT_PLANE, &[0i32, 1, 0, 0])?; // glTexGeniv
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn tex_gen<T: Into<f64> + Copy>(
         &mut self,
         coord: GLenum,
@@ -43,6 +56,16 @@ impl Context {
     }
 
     /// glTexGen{ifd}: the scalar form takes GL_TEXTURE_GEN_MODE only.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.tex_gen_scalar(GL_Q, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR as f64)?;
+    /// assert_eq!(ctx.tex_gen_scalar(GL_Q, GL_EYE_PLANE, 1.0), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn tex_gen_scalar(&mut self, coord: GLenum, pname: GLenum, param: f64) -> GlResult {
         self.outside_begin_end()?;
         coord_index(coord)?;
@@ -53,12 +76,32 @@ impl Context {
     }
 
     /// glGetTexGen{ifd}v on the active texture unit.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.get_tex_gen(GL_S, GL_OBJECT_PLANE)?, [1.0, 0.0, 0.0, 0.0]);
+    /// assert_eq!(ctx.get_tex_gen(GL_T, GL_EYE_PLANE)?, [0.0, 1.0, 0.0, 0.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_tex_gen(&self, coord: GLenum, pname: GLenum) -> GlResult<Vec<f64>> {
         self.outside_begin_end()?;
         self.textures.unit().tex_gen.get(coord_index(coord)?, pname)
     }
 
     /// glGetTexGeniv: plane coefficients rounded to the nearest integer (§6.1.2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.tex_gen(GL_S, GL_OBJECT_PLANE, &[0.4f64, 0.6, -1.5, 2.0])?;
+    /// assert_eq!(ctx.get_tex_gen_i(GL_S, GL_OBJECT_PLANE)?, [0, 1, -2, 2]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_tex_gen_i(&self, coord: GLenum, pname: GLenum) -> GlResult<Vec<GLint>> {
         let values = self.get_tex_gen(coord, pname)?;
         Ok(values.into_iter().map(|v| v.round() as GLint).collect())
@@ -66,6 +109,17 @@ impl Context {
 
     /// glMultiTexCoord (§2.7): texture unit `target`'s current texture coordinates, missing
     /// components (0, 0, 1) as glTexCoord's. Allowed between glBegin and glEnd.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.multi_tex_coord(GL_TEXTURE0, glam::Vec4::new(0.5, 0.25, 0.0, 1.0))?;
+    /// assert_eq!(ctx.get(GL_CURRENT_TEXTURE_COORDS)?.as_floats(), [0.5, 0.25, 0.0, 1.0]);
+    /// assert_eq!(ctx.multi_tex_coord(GL_TEXTURE0 + 8, glam::Vec4::W), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn multi_tex_coord(&mut self, target: GLenum, tex_coord: Vec4) -> GlResult {
         let unit = unit_of(target)?;
         self.current.set_unit_tex_coord(unit, tex_coord);
@@ -73,6 +127,16 @@ impl Context {
     }
 
     /// glMultiTexCoord{1234}{sifd}: `N` components converted directly.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.multi_tex_coord_of(GL_TEXTURE0, [3i16, 4])?; // glMultiTexCoord2s
+    /// assert_eq!(ctx.get(GL_CURRENT_TEXTURE_COORDS)?.as_floats(), [3.0, 4.0, 0.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn multi_tex_coord_of<T: Component, const N: usize>(
         &mut self,
         target: GLenum,
@@ -86,6 +150,17 @@ impl Context {
     }
 
     /// glMultiTexCoord{1234}{sifd}v: GL_INVALID_VALUE for a NULL (empty) vector.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.multi_tex_coord_v::<f64, 1>(GL_TEXTURE0, &[0.75])?; // glMultiTexCoord1dv
+    /// assert_eq!(ctx.get(GL_CURRENT_TEXTURE_COORDS)?.as_floats(), [0.75, 0.0, 0.0, 1.0]);
+    /// assert_eq!(ctx.multi_tex_coord_v::<f64, 3>(GL_TEXTURE0, &[]), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn multi_tex_coord_v<T: Component, const N: usize>(
         &mut self,
         target: GLenum,
@@ -96,6 +171,16 @@ impl Context {
     }
 
     /// glClientActiveTexture (§2.8).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.client_active_texture(GL_TEXTURE2)?;
+    /// assert_eq!(ctx.get(GL_CLIENT_ACTIVE_TEXTURE)?.as_ints(), [GL_TEXTURE2 as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn client_active_texture(&mut self, texture: GLenum) -> GlResult {
         self.arrays.set_client_active_texture(texture)
     }

@@ -14,18 +14,50 @@ use crate::state::texture_image::{Layout, PixelFormat, pack, pixel_type, transfe
 
 impl Context {
     /// glPixelStorei / glPixelStoref (§3.6.1, §4.3.2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::pixel::StoreParam, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.pixel_store(GL_UNPACK_ALIGNMENT, StoreParam::Int(1))?;
+    /// ctx.pixel_store(GL_PACK_ROW_LENGTH, StoreParam::Float(7.6))?; // rounded
+    /// assert_eq!(ctx.get(GL_PACK_ROW_LENGTH)?.as_ints(), [8]);
+    /// assert_eq!(ctx.pixel_store(GL_UNPACK_ALIGNMENT, StoreParam::Int(3)), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn pixel_store(&mut self, pname: GLenum, param: StoreParam) -> GlResult {
         self.outside_begin_end()?;
         self.pixel_store.set(pname, param)
     }
 
     /// glPixelTransferf / glPixelTransferi (§3.6.3).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.pixel_transfer(GL_RED_SCALE, 2.0)?;
+    /// assert_eq!(ctx.get(GL_RED_SCALE)?.as_floats(), [2.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn pixel_transfer(&mut self, pname: GLenum, param: f32) -> GlResult {
         self.outside_begin_end()?;
         self.pixel_mode.set_transfer(pname, param)
     }
 
     /// glPixelZoom (§3.6.4).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.pixel_zoom(2.0, -1.0)?;
+    /// assert_eq!(ctx.get(GL_ZOOM_Y)?.as_floats(), [-1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn pixel_zoom(&mut self, x: f32, y: f32) -> GlResult {
         self.outside_begin_end()?;
         self.pixel_mode.zoom = [x, y];
@@ -33,6 +65,18 @@ impl Context {
     }
 
     /// glPixelMapfv (§3.6.3).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.pixel_map(GL_PIXEL_MAP_R_TO_R, 2, &[1.0, 0.0])?;
+    /// assert_eq!(ctx.get_pixel_map(GL_PIXEL_MAP_R_TO_R)?, [1.0, 0.0]);
+    /// // Maps from indices have a power-of-two size.
+    /// assert_eq!(ctx.pixel_map(GL_PIXEL_MAP_I_TO_R, 3, &[0.0; 3]), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn pixel_map(&mut self, map: GLenum, mapsize: GLsizei, values: &[f32]) -> GlResult {
         self.outside_begin_end()?;
         self.pixel_maps.set(map, mapsize, values)
@@ -40,6 +84,16 @@ impl Context {
 
     /// glPixelMapuiv / glPixelMapusv: color values are mapped from [0, max] to [0, 1] (`max`
     /// is the type's largest value), index values converted directly.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.pixel_map_integers(GL_PIXEL_MAP_G_TO_G, 2, &[0u16, 65535], 65535.0)?; // glPixelMapusv
+    /// assert_eq!(ctx.get_pixel_map(GL_PIXEL_MAP_G_TO_G)?, [0.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn pixel_map_integers<T: Copy + Into<f64>>(
         &mut self,
         map: GLenum,
@@ -59,6 +113,15 @@ impl Context {
     }
 
     /// glGetPixelMapfv (§6.1.3).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.get_pixel_map(GL_PIXEL_MAP_I_TO_I)?, [0.0]); // one entry initially
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_pixel_map(&self, map: GLenum) -> GlResult<Vec<f32>> {
         self.outside_begin_end()?;
         Ok(self.pixel_maps.get(map)?.to_vec())
@@ -66,6 +129,16 @@ impl Context {
 
     /// glGetPixelMapusv: color values mapped from [0, 1] to [0, 65535] and rounded, index
     /// values rounded; both clamped to the type.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.pixel_map(GL_PIXEL_MAP_A_TO_A, 1, &[0.5])?;
+    /// assert_eq!(ctx.get_pixel_map_ushort(GL_PIXEL_MAP_A_TO_A)?, [32768]); // 0.5 * 65535, rounded
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_pixel_map_ushort(&self, map: GLenum) -> GlResult<Vec<GLushort>> {
         let scale = if is_index_map(map) { 1.0 } else { 65535.0 };
         let values = self.get_pixel_map(map)?;
@@ -78,6 +151,16 @@ impl Context {
     /// glGetPixelMapuiv: color values mapped from [0, 1] to [0, 2^32 - 1] and truncated (the
     /// spec leaves the rounding open; Mesa truncates here, and rounds for glGetPixelMapusv),
     /// index values rounded; both clamped to the type.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.pixel_map(GL_PIXEL_MAP_I_TO_I, 1, &[6.6])?;
+    /// assert_eq!(ctx.get_pixel_map_uint(GL_PIXEL_MAP_I_TO_I)?, [7]); // index values rounded
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_pixel_map_uint(&self, map: GLenum) -> GlResult<Vec<GLuint>> {
         let index_map = is_index_map(map);
         let values = self.get_pixel_map(map)?;
@@ -203,6 +286,15 @@ impl Context {
 
     /// How many bytes glReadPixels writes into under the current pack modes (0 for
     /// arguments it rejects).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.read_pixels_span(3, 2, GL_RGBA, GL_UNSIGNED_BYTE), 24);
+    /// assert_eq!(ctx.read_pixels_span(3, 2, GL_RGBA, GL_LIGHT0), 0); // rejected
+    /// ```
     pub fn read_pixels_span(
         &self,
         width: GLsizei,
@@ -219,6 +311,18 @@ impl Context {
     /// pixel read is color (0, 0, 0, 0), depth 0 and stencil 0, which then go through pixel
     /// transfer (§3.6.5: scale, bias and maps; index shift, offset and map) and are packed
     /// with the GL_PACK_* modes into `pixels`; the bytes between them are left as they are.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// let mut pixels = [7u8; 8];
+    /// ctx.read_pixels([2, 1], GL_RGBA, GL_UNSIGNED_BYTE, &mut pixels)?;
+    /// assert_eq!(pixels, [0; 8]); // nothing was drawn
+    /// assert_eq!(ctx.read_pixels([1, 1], GL_COLOR_INDEX, GL_UNSIGNED_BYTE, &mut pixels), Err(GlError::InvalidOperation));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn read_pixels(
         &mut self,
         [width, height]: [GLsizei; 2],

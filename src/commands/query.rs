@@ -20,14 +20,25 @@ pub const MAX_ELEMENTS: i32 = 3000;
 /// A queried state value in its own type; §6.1.2 converts it to the type asked for.
 #[derive(Clone, Debug, PartialEq)]
 pub enum StateValue {
+    /// Booleans (glGetBooleanv's natural type).
     Bools(Vec<bool>),
+    /// Integers; colors among them are converted as §6.1.2 says when read as floats.
     Ints(Vec<i32>),
+    /// Floating-point values, kept in double.
     Floats(Vec<f64>),
     /// Colors, normals and the depth range: mapped linearly to integers when asked as such.
     Normalized(Vec<f64>),
 }
 
 impl StateValue {
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// assert_eq!(Context::new().get(GL_DEPTH_RANGE)?.as_doubles(), [0.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn as_doubles(&self) -> Vec<f64> {
         match self {
             StateValue::Bools(v) => v.iter().map(|&b| b as u8 as f64).collect(),
@@ -36,10 +47,28 @@ impl StateValue {
         }
     }
 
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// // Booleans read as floats are 0.0 or 1.0.
+    /// assert_eq!(Context::new().get(GL_DITHER)?.as_floats(), [1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn as_floats(&self) -> Vec<f32> {
         self.as_doubles().into_iter().map(|v| v as f32).collect()
     }
 
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// // Colors read as integers map [-1, 1] to the whole integer range (§6.1.2).
+    /// assert_eq!(Context::new().get(GL_CURRENT_COLOR)?.as_ints(), [i32::MAX; 4]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn as_ints(&self) -> Vec<i32> {
         match self {
             StateValue::Bools(v) => v.iter().map(|&b| b as i32).collect(),
@@ -49,6 +78,15 @@ impl StateValue {
         }
     }
 
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// // Non-zero numbers read as booleans are true.
+    /// assert_eq!(Context::new().get(GL_MAX_LIGHTS)?.as_bools(), [true]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn as_bools(&self) -> Vec<bool> {
         match self {
             StateValue::Bools(v) => v.clone(),
@@ -78,6 +116,17 @@ pub(crate) fn enumeration(value: GLenum) -> StateValue {
 
 impl Context {
     /// The value of `pname` for glGet*v.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.get(GL_MAX_LIGHTS)?.as_ints(), [8]);
+    /// assert_eq!(ctx.get(GL_LIGHT_MODEL_AMBIENT)?.as_floats(), [0.2, 0.2, 0.2, 1.0]);
+    /// assert_eq!(ctx.get(GL_LIGHTING)?.as_bools(), [false]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get(&self, pname: GLenum) -> GlResult<StateValue> {
         self.outside_begin_end()?;
         if self.group_flag(pname).is_some() || Capability::of(pname).is_ok() {
@@ -243,6 +292,15 @@ impl Context {
     }
 
     /// glGetString.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// assert!(ctx.get_string(GL_VERSION)?.to_str().unwrap().starts_with("1.5"));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_string(&self, name: GLenum) -> GlResult<&'static CStr> {
         self.outside_begin_end()?;
         Ok(match name {

@@ -18,9 +18,11 @@ use crate::state::texture_image::{format_components, pixel_type};
 pub struct RasterPosition {
     /// Window x, y, z and the clip w.
     pub window: Vec4,
+    /// GL_CURRENT_RASTER_POSITION_VALID.
     pub valid: bool,
     /// The front primary color, lit when lighting is on.
     pub color: Vec4,
+    /// The front secondary color, lit when lighting is on.
     pub secondary_color: Vec4,
     /// Texture unit 0's texture coordinates, generated and through the texture matrix.
     pub tex_coord: Vec4,
@@ -46,6 +48,19 @@ impl Default for RasterPosition {
 
 impl RasterPosition {
     /// Texture unit `unit`'s texture coordinates.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.multi_tex_coord(GL_TEXTURE1, glam::Vec4::new(0.5, 0.5, 0.0, 1.0))?;
+    /// ctx.raster_pos(glam::Vec4::W)?;
+    /// // The raster position carries each unit's coordinates.
+    /// ctx.active_texture(GL_TEXTURE1)?;
+    /// assert_eq!(ctx.get(GL_CURRENT_RASTER_TEXTURE_COORDS)?.as_floats(), [0.5, 0.5, 0.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn unit_tex_coord(&self, unit: usize) -> Vec4 {
         match unit {
             0 => self.tex_coord,
@@ -80,6 +95,19 @@ impl Context {
     /// its other values stay as they were. In selection mode a valid position is a hit (§5.2);
     /// in feedback mode it emits nothing (GL_BITMAP_TOKEN and GL_DRAW_PIXEL_TOKEN belong to
     /// glBitmap and glDrawPixels).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.viewport(0, 0, 100, 100)?;
+    /// ctx.raster_pos(glam::Vec4::new(0.5, 0.0, 0.0, 1.0))?;
+    /// assert_eq!(ctx.get(GL_CURRENT_RASTER_POSITION)?.as_floats(), [75.0, 50.0, 0.5, 1.0]);
+    /// ctx.raster_pos(glam::Vec4::new(2.0, 0.0, 0.0, 1.0))?; // clipped away
+    /// assert_eq!(ctx.get(GL_CURRENT_RASTER_POSITION_VALID)?.as_bools(), [false]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn raster_pos(&mut self, object: Vec4) -> GlResult {
         self.outside_begin_end()?;
         let attribs = self.current;
@@ -129,6 +157,16 @@ impl Context {
     /// range (clamped to it); no transformation, lighting or clipping: the raster colors are
     /// the current ones clamped to [0, 1], the texture coordinate is the current one, and the
     /// position is valid. In selection mode it is a hit, as in Mesa.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.window_pos([10.0, 20.0, 2.0])?; // z clamped to the depth range
+    /// assert_eq!(ctx.get(GL_CURRENT_RASTER_POSITION)?.as_floats(), [10.0, 20.0, 1.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn window_pos(&mut self, [x, y, z]: [f64; 3]) -> GlResult {
         self.outside_begin_end()?;
         let [near, far] = self.raster.depth_range;
@@ -159,6 +197,17 @@ impl Context {
     /// raster position's vertex (§5.3), then the raster position moves by (`xmove`, `ymove`).
     /// There is no framebuffer to draw the bitmap into, and no selection hit (§5.2 counts
     /// primitives and raster positions only). Negative sizes are GL_INVALID_VALUE.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.window_pos([10.0, 10.0, 0.0])?;
+    /// ctx.bitmap(8, 8, 8.0, 0.0)?; // moves the raster position
+    /// assert_eq!(ctx.get(GL_CURRENT_RASTER_POSITION)?.as_floats()[0], 18.0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn bitmap(&mut self, width: i32, height: i32, xmove: f32, ymove: f32) -> GlResult {
         self.outside_begin_end()?;
         if width < 0 || height < 0 {
@@ -176,6 +225,21 @@ impl Context {
     /// glCopyPixels (§4.3.3): checked (sizes, then the type), and with a valid raster
     /// position fed back as GL_COPY_PIXEL_TOKEN and the raster position's vertex. Nothing is
     /// copied: there is no framebuffer.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.window_pos([1.0, 2.0, 0.0])?;
+    /// ctx.feedback_buffer(16, GL_2D, 1)?;
+    /// ctx.render_mode(GL_FEEDBACK)?;
+    /// ctx.copy_pixels(4, 4, GL_COLOR)?;
+    /// let (_, finished) = ctx.render_mode(GL_RENDER)?;
+    /// assert_eq!(finished.unwrap().values, [GL_COPY_PIXEL_TOKEN as f32, 1.0, 2.0]);
+    /// assert_eq!(ctx.copy_pixels(-1, 4, GL_COLOR), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn copy_pixels(&mut self, width: i32, height: i32, kind: GLenum) -> GlResult {
         self.outside_begin_end()?;
         if width < 0 || height < 0 {
@@ -206,12 +270,33 @@ impl Context {
     }
 
     /// glWindowPos from any component type (converted directly).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.window_pos_of(3i32, 4, 0)?; // glWindowPos3i
+    /// assert_eq!(ctx.get(GL_CURRENT_RASTER_POSITION)?.as_floats()[..2], [3.0, 4.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn window_pos_of<T: Into<f64>>(&mut self, x: T, y: T, z: T) -> GlResult {
         self.window_pos([x.into(), y.into(), z.into()])
     }
 
     /// glWindowPos2v / glWindowPos3v: `v` holds 2 or 3 values (z 0 for 2); GL_INVALID_VALUE
     /// for a NULL (empty) vector.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.window_pos_v(&[5.0f32, 6.0])?; // glWindowPos2fv: z is 0
+    /// assert_eq!(ctx.get(GL_CURRENT_RASTER_POSITION)?.as_floats(), [5.0, 6.0, 0.0, 1.0]);
+    /// assert_eq!(ctx.window_pos_v::<f32>(&[]), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn window_pos_v<T: Into<f64> + Copy>(&mut self, v: &[T]) -> GlResult {
         match *v {
             [x, y] => self.window_pos([x.into(), y.into(), 0.0]),
@@ -254,6 +339,16 @@ impl Context {
     /// valid raster position fed back as GL_DRAW_PIXEL_TOKEN and the raster position's
     /// vertex (§5.3). The pixels are not read: there is no framebuffer to draw them into. Not
     /// a selection hit (§5.2 counts primitives and raster positions only).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.draw_pixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE)?; // checked; nothing to draw into
+    /// assert_eq!(ctx.draw_pixels(2, 2, GL_RGBA, GL_RGBA), Err(GlError::InvalidEnum)); // bad type
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn draw_pixels(&mut self, width: i32, height: i32, format: GLenum, ty: GLenum) -> GlResult {
         self.outside_begin_end()?;
         if width < 0 || height < 0 {

@@ -22,6 +22,17 @@ fn scalar(count: Option<usize>) -> GlResult {
 
 impl Context {
     /// glPointSize (§3.3).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.point_size(4.0)?;
+    /// assert_eq!(ctx.get(GL_POINT_SIZE)?.as_floats(), [4.0]);
+    /// assert_eq!(ctx.point_size(0.0), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn point_size(&mut self, size: f32) -> GlResult {
         self.outside_begin_end()?;
         self.point.size = positive_size(size)?;
@@ -29,18 +40,48 @@ impl Context {
     }
 
     /// glPointParameterfv (§3.3).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.point_parameter(GL_POINT_DISTANCE_ATTENUATION, &[1.0, 0.5, 0.25])?;
+    /// assert_eq!(ctx.get(GL_POINT_DISTANCE_ATTENUATION)?.as_floats(), [1.0, 0.5, 0.25]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn point_parameter(&mut self, pname: GLenum, params: &[f32]) -> GlResult {
         self.outside_begin_end()?;
         self.point.set(pname, params)
     }
 
     /// glPointParameteriv: the integers converted directly.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.point_parameter_i(GL_POINT_SIZE_MIN, &[2])?;
+    /// assert_eq!(ctx.get(GL_POINT_SIZE_MIN)?.as_floats(), [2.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn point_parameter_i(&mut self, pname: GLenum, params: &[GLint]) -> GlResult {
         let floats: Vec<f32> = params.iter().map(|&p| p as f32).collect();
         self.point_parameter(pname, &floats)
     }
 
     /// glPointParameterf / glPointParameteri.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.point_parameter_scalar(GL_POINT_FADE_THRESHOLD_SIZE, 2.0)?;
+    /// assert_eq!(ctx.point_parameter_scalar(GL_POINT_SIZE_MIN, -1.0), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn point_parameter_scalar(&mut self, pname: GLenum, param: f32) -> GlResult {
         self.outside_begin_end()?;
         scalar(point_param_count(pname))?;
@@ -48,6 +89,17 @@ impl Context {
     }
 
     /// glLineWidth (§3.4).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.line_width(2.5)?;
+    /// assert_eq!(ctx.get(GL_LINE_WIDTH)?.as_floats(), [2.5]);
+    /// assert_eq!(ctx.line_width(-1.0), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn line_width(&mut self, width: f32) -> GlResult {
         self.outside_begin_end()?;
         self.line.width = positive_size(width)?;
@@ -55,6 +107,17 @@ impl Context {
     }
 
     /// glLineStipple (§3.4.2): the repeat factor is clamped to [1, 256].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.line_stipple(0, 0xaaaa)?;
+    /// assert_eq!(ctx.get(GL_LINE_STIPPLE_REPEAT)?.as_ints(), [1]); // clamped to [1, 256]
+    /// assert_eq!(ctx.get(GL_LINE_STIPPLE_PATTERN)?.as_ints(), [0xaaaa]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn line_stipple(&mut self, factor: GLint, pattern: GLushort) -> GlResult {
         self.outside_begin_end()?;
         self.line.stipple_repeat = factor.clamp(1, 256);
@@ -63,6 +126,16 @@ impl Context {
     }
 
     /// glPolygonOffset (§3.5.5).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.polygon_offset(1.0, 2.0)?;
+    /// assert_eq!(ctx.get(GL_POLYGON_OFFSET_UNITS)?.as_floats(), [2.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn polygon_offset(&mut self, factor: f32, units: f32) -> GlResult {
         self.outside_begin_end()?;
         self.polygon.offset_factor = factor;
@@ -71,17 +144,46 @@ impl Context {
     }
 
     /// How many bytes glPolygonStipple reads under the current unpack modes.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::Context;
+    /// // 32 rows of 4 bytes under the initial unpack modes.
+    /// assert_eq!(Context::new().polygon_stipple_unpack_span(), 128);
+    /// ```
     pub fn polygon_stipple_unpack_span(&self) -> usize {
         crate::state::pixel::stipple_unpack_span(&self.pixel_store.unpack)
     }
 
     /// How many bytes glGetPolygonStipple writes into under the current pack modes.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::Context;
+    /// assert_eq!(Context::new().polygon_stipple_pack_span(), 128);
+    /// ```
     pub fn polygon_stipple_pack_span(&self) -> usize {
         crate::state::pixel::stipple_pack_span(&self.pixel_store.pack)
     }
 
     /// glPolygonStipple (§3.5.2): a 32 x 32 bitmap unpacked with the unpack modes (§3.6.4).
     /// Too few bytes (a NULL pointer) is GL_INVALID_VALUE.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{Context, GlError};
+    /// let mut ctx = Context::new();
+    /// let pattern: Vec<u8> = (0..128).map(|i| if i % 8 < 4 { 0xf0 } else { 0x0f }).collect();
+    /// ctx.polygon_stipple(&pattern)?;
+    /// let mut back = [0u8; 128];
+    /// ctx.get_polygon_stipple(&mut back)?;
+    /// assert_eq!(back.to_vec(), pattern);
+    /// assert_eq!(ctx.polygon_stipple(&pattern[..10]), Err(GlError::InvalidValue)); // too few bytes
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn polygon_stipple(&mut self, bytes: &[u8]) -> GlResult {
         self.outside_begin_end()?;
         self.polygon_stipple.rows = unpack_stipple(&self.pixel_store.unpack, bytes)?;
@@ -89,12 +191,34 @@ impl Context {
     }
 
     /// glGetPolygonStipple (§6.1.6): packed into `bytes` with the pack modes (§4.3.2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::Context;
+    /// let ctx = Context::new();
+    /// let mut bytes = [0u8; 128];
+    /// ctx.get_polygon_stipple(&mut bytes)?;
+    /// assert!(bytes.iter().all(|&b| b == 0xff)); // initially all ones
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_polygon_stipple(&self, bytes: &mut [u8]) -> GlResult {
         self.outside_begin_end()?;
         pack_stipple(&self.pixel_store.pack, &self.polygon_stipple.rows, bytes)
     }
 
     /// glFogfv (§3.10).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.fog(GL_FOG_COLOR, &[0.5, 0.5, 0.5, 1.0])?;
+    /// assert_eq!(ctx.get(GL_FOG_COLOR)?.as_floats(), [0.5, 0.5, 0.5, 1.0]);
+    /// assert_eq!(ctx.fog(GL_FOG_DENSITY, &[-1.0]), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn fog(&mut self, pname: GLenum, params: &[f32]) -> GlResult {
         self.outside_begin_end()?;
         self.fog.set(pname, params)
@@ -102,11 +226,32 @@ impl Context {
 
     /// glFogiv: the color mapped linearly to [-1, 1] (table 2.9) before clamping, other values
     /// converted directly.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.fog_i(GL_FOG_MODE, &[GL_LINEAR as i32])?;
+    /// ctx.fog_i(GL_FOG_END, &[10])?;
+    /// assert_eq!(ctx.get(GL_FOG_END)?.as_floats(), [10.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn fog_i(&mut self, pname: GLenum, params: &[GLint]) -> GlResult {
         self.fog(pname, &int_params(params, pname == GL_FOG_COLOR))
     }
 
     /// glFogf / glFogi.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.fog_scalar(GL_FOG_START, 2.0)?;
+    /// assert_eq!(ctx.fog_scalar(GL_FOG_COLOR, 1.0), Err(GlError::InvalidEnum)); // a vector
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn fog_scalar(&mut self, pname: GLenum, param: f32) -> GlResult {
         self.outside_begin_end()?;
         scalar(fog_param_count(pname))?;
@@ -114,6 +259,17 @@ impl Context {
     }
 
     /// glSampleCoverage (§4.1.3): the value is clamped to [0, 1].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.sample_coverage(2.0, true)?;
+    /// assert_eq!(ctx.get(GL_SAMPLE_COVERAGE_VALUE)?.as_floats(), [1.0]);
+    /// assert_eq!(ctx.get(GL_SAMPLE_COVERAGE_INVERT)?.as_bools(), [true]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn sample_coverage(&mut self, value: f32, invert: bool) -> GlResult {
         self.outside_begin_end()?;
         self.multisample.coverage_value = value.clamp(0.0, 1.0);
@@ -122,6 +278,17 @@ impl Context {
     }
 
     /// glHint (§5.6).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.hint(GL_FOG_HINT, GL_NICEST)?;
+    /// assert_eq!(ctx.get(GL_FOG_HINT)?.as_ints(), [GL_NICEST as i32]);
+    /// assert_eq!(ctx.hint(GL_FOG_HINT, GL_LIGHT0), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn hint(&mut self, target: GLenum, mode: GLenum) -> GlResult {
         self.outside_begin_end()?;
         self.hints.set(target, mode)

@@ -21,14 +21,28 @@ use crate::state::texture_image::{
 /// (0 otherwise), and whether it is a proxy.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ImageTarget {
+    /// The texture target (1D, 2D, 3D or cube map).
     pub target: Target,
+    /// The cube map face, 0 to 5 (0 for other targets).
     pub face: usize,
+    /// A GL_PROXY_* target: checked, never stored.
     pub proxy: bool,
 }
 
 impl ImageTarget {
     /// The image target `target` names for a command on `dimensions`-dimensional images:
     /// GL_INVALID_ENUM for any other (`proxies`: whether the command takes proxy targets).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::texture::ImageTarget, gl::*, state::texture::Target, GlError};
+    /// let target = ImageTarget::of(GL_TEXTURE_CUBE_MAP_NEGATIVE_X, 2, false)?;
+    /// assert_eq!((target.target, target.face, target.proxy), (Target::CubeMap, 1, false));
+    /// assert!(ImageTarget::of(GL_PROXY_TEXTURE_2D, 2, true)?.proxy);
+    /// assert_eq!(ImageTarget::of(GL_TEXTURE_3D, 2, true).err(), Some(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn of(target: GLenum, dimensions: usize, proxies: bool) -> GlResult<ImageTarget> {
         let faces = GL_TEXTURE_CUBE_MAP_POSITIVE_X..=GL_TEXTURE_CUBE_MAP_NEGATIVE_Z;
         let image = if faces.contains(&target) {
@@ -90,35 +104,70 @@ fn image_size(dimensions: usize, size: [GLsizei; 3]) -> [GLsizei; 3] {
 /// The arguments of glTexImage1D/2D/3D.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TexImageArgs {
+    /// `target`, as given.
     pub target: GLenum,
+    /// The mipmap level.
     pub level: GLint,
+    /// The requested internal format (a base format, a sized one, or 1 to 4).
     pub internal_format: GLint,
     /// Width, height, depth; the unused ones ignored.
     pub size: [GLsizei; 3],
+    /// The border width, 0 or 1.
     pub border: GLint,
+    /// The format of the client pixels.
     pub format: GLenum,
+    /// The type of the client pixels.
     pub ty: GLenum,
 }
 
 /// The arguments of glTexSubImage1D/2D/3D and glCopyTexSubImage (format and type unused).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SubImageArgs {
+    /// `target`, as given.
     pub target: GLenum,
+    /// The mipmap level.
     pub level: GLint,
+    /// x, y, z offset of the region in the image; the unused ones ignored.
     pub offset: [GLint; 3],
+    /// Width, height, depth of the region; the unused ones ignored.
     pub size: [GLsizei; 3],
+    /// The format of the client pixels.
     pub format: GLenum,
+    /// The type of the client pixels.
     pub ty: GLenum,
 }
 
 impl Context {
     /// glActiveTexture (§2.7).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.active_texture(GL_TEXTURE3)?;
+    /// assert_eq!(ctx.get(GL_ACTIVE_TEXTURE)?.as_ints(), [GL_TEXTURE3 as i32]);
+    /// assert_eq!(ctx.active_texture(GL_TEXTURE0 + 8), Err(GlError::InvalidEnum)); // 8 units
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn active_texture(&mut self, texture: GLenum) -> GlResult {
         self.outside_begin_end()?;
         self.textures.set_active(texture)
     }
 
     /// glGenTextures: writes `n` unused names into `names`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// let mut names = [0; 3];
+    /// ctx.gen_textures(3, &mut names)?;
+    /// assert!(names.iter().all(|&n| n != 0));
+    /// assert_eq!(ctx.is_texture(names[0])?, GL_FALSE); // a texture once bound
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn gen_textures(&mut self, n: GLsizei, names: &mut [GLuint]) -> GlResult {
         self.outside_begin_end()?;
         let count = usize::try_from(n).map_err(|_| GlError::InvalidValue)?;
@@ -128,6 +177,18 @@ impl Context {
     }
 
     /// glDeleteTextures (§3.8.12): the bindings of deleted objects revert to 0.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.bind_texture(GL_TEXTURE_2D, 7)?;
+    /// ctx.delete_textures(1, &[7])?;
+    /// assert_eq!(ctx.get(GL_TEXTURE_BINDING_2D)?.as_ints(), [0]);
+    /// assert_eq!(ctx.is_texture(7)?, GL_FALSE);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn delete_textures(&mut self, n: GLsizei, names: &[GLuint]) -> GlResult {
         self.outside_begin_end()?;
         let count = usize::try_from(n).map_err(|_| GlError::InvalidValue)?;
@@ -139,12 +200,34 @@ impl Context {
     }
 
     /// glIsTexture.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.bind_texture(GL_TEXTURE_1D, 2)?;
+    /// assert_eq!(ctx.is_texture(2)?, GL_TRUE);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn is_texture(&self, name: GLuint) -> GlResult<GLboolean> {
         self.outside_begin_end()?;
         Ok(self.textures.is_texture(name) as GLboolean)
     }
 
     /// glBindTexture (§3.8.12) on the active unit.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.bind_texture(GL_TEXTURE_2D, 1)?;
+    /// assert_eq!(ctx.get(GL_TEXTURE_BINDING_2D)?.as_ints(), [1]);
+    /// // An object keeps the target it was first bound to.
+    /// assert_eq!(ctx.bind_texture(GL_TEXTURE_3D, 1), Err(GlError::InvalidOperation));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn bind_texture(&mut self, target: GLenum, name: GLuint) -> GlResult {
         self.outside_begin_end()?;
         let target = Target::of(target).ok_or(GlError::InvalidEnum)?;
@@ -154,6 +237,18 @@ impl Context {
     /// glAreTexturesResident (§3.8.12): every texture is resident, so GL_TRUE and
     /// `residences` untouched; GL_INVALID_VALUE for a negative count, or a name that is 0 or
     /// no texture.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.bind_texture(GL_TEXTURE_2D, 1)?;
+    /// let mut residences = [GL_FALSE; 1];
+    /// assert_eq!(ctx.are_textures_resident(1, &[1], &mut residences)?, GL_TRUE);
+    /// assert_eq!(ctx.are_textures_resident(1, &[9], &mut residences), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn are_textures_resident(
         &self,
         n: GLsizei,
@@ -171,6 +266,17 @@ impl Context {
 
     /// glPrioritizeTextures: priorities clamped to [0, 1]; 0 and names of no texture are
     /// ignored.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.bind_texture(GL_TEXTURE_2D, 1)?;
+    /// ctx.prioritize_textures(1, &[1], &[2.0])?;
+    /// assert_eq!(ctx.get_tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_PRIORITY)?, [1.0]); // clamped
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn prioritize_textures(
         &mut self,
         n: GLsizei,
@@ -198,12 +304,34 @@ impl Context {
     }
 
     /// glTexParameterfv (§3.8.4).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, &[0.5, 2.0, 0.0, 1.0])?;
+    /// assert_eq!(ctx.get_tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR)?, [0.5, 1.0, 0.0, 1.0]);
+    /// let bad = [GL_LINEAR_MIPMAP_LINEAR as f32];
+    /// assert_eq!(ctx.tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &bad), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn tex_parameter(&mut self, target: GLenum, pname: GLenum, params: &[f32]) -> GlResult {
         self.parameter_object(target)?.params.set(pname, params)
     }
 
     /// glTexParameteriv: the border color maps integers to [-1, 1] (then clamped), the
     /// other values convert directly.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.tex_parameter_i(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, &[GL_CLAMP_TO_EDGE as i32])?;
+    /// assert_eq!(ctx.get_tex_parameter_i(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S)?, [GL_CLAMP_TO_EDGE as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn tex_parameter_i(&mut self, target: GLenum, pname: GLenum, params: &[GLint]) -> GlResult {
         let floats = int_params(params, pname == GL_TEXTURE_BORDER_COLOR);
         self.tex_parameter(target, pname, &floats)
@@ -211,6 +339,16 @@ impl Context {
 
     /// glTexParameterf / glTexParameteri: GL_INVALID_ENUM for the border color, which has
     /// four values.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.tex_parameter_scalar(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 4.0)?;
+    /// assert_eq!(ctx.tex_parameter_scalar(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 1.0), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn tex_parameter_scalar(&mut self, target: GLenum, pname: GLenum, param: f32) -> GlResult {
         self.parameter_object(target)?;
         if tex_parameter_count(pname) != Some(1) {
@@ -248,16 +386,44 @@ impl Context {
     }
 
     /// glGetTexParameterfv.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.get_tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER)?, [GL_NEAREST_MIPMAP_LINEAR as f32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_tex_parameter(&mut self, target: GLenum, pname: GLenum) -> GlResult<Vec<f32>> {
         Ok(self.tex_parameter_value(target, pname)?.as_floats())
     }
 
     /// glGetTexParameteriv: the border color and priority mapped to integers (§6.1.2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.get_tex_parameter_i(GL_TEXTURE_2D, GL_TEXTURE_PRIORITY)?, [i32::MAX]); // 1.0
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_tex_parameter_i(&mut self, target: GLenum, pname: GLenum) -> GlResult<Vec<GLint>> {
         Ok(self.tex_parameter_value(target, pname)?.as_ints())
     }
 
     /// glTexEnvfv (§3.8.13) on the active unit.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.tex_env(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[0.25, 0.5, 0.75, 1.0])?;
+    /// assert_eq!(ctx.get_tex_env(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR)?, [0.25, 0.5, 0.75, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn tex_env(&mut self, target: GLenum, pname: GLenum, params: &[f32]) -> GlResult {
         self.outside_begin_end()?;
         self.textures.unit_mut().env.set(target, pname, params)
@@ -265,12 +431,32 @@ impl Context {
 
     /// glTexEnviv: the color maps integers to [-1, 1] (then clamped), the others convert
     /// directly.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.tex_env_i(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &[GL_DECAL as i32])?;
+    /// assert_eq!(ctx.get_tex_env_i(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE)?, [GL_DECAL as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn tex_env_i(&mut self, target: GLenum, pname: GLenum, params: &[GLint]) -> GlResult {
         let floats = int_params(params, pname == GL_TEXTURE_ENV_COLOR);
         self.tex_env(target, pname, &floats)
     }
 
     /// glTexEnvf / glTexEnvi: GL_INVALID_ENUM for the color, which has four values.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.tex_env_scalar(GL_TEXTURE_ENV, GL_RGB_SCALE, 2.0)?;
+    /// assert_eq!(ctx.tex_env_scalar(GL_TEXTURE_ENV, GL_RGB_SCALE, 3.0), Err(GlError::InvalidValue)); // 1, 2 or 4
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn tex_env_scalar(&mut self, target: GLenum, pname: GLenum, param: f32) -> GlResult {
         self.outside_begin_end()?;
         if matches!(target, GL_TEXTURE_ENV | GL_TEXTURE_FILTER_CONTROL)
@@ -282,12 +468,30 @@ impl Context {
     }
 
     /// glGetTexEnvfv (§6.1.3).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.get_tex_env(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE)?, [GL_MODULATE as f32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_tex_env(&self, target: GLenum, pname: GLenum) -> GlResult<Vec<f32>> {
         self.outside_begin_end()?;
         Ok(self.textures.unit().env.get(target, pname)?.0)
     }
 
     /// glGetTexEnviv: the color mapped to integers (§6.1.2), scales and the LOD bias rounded.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.get_tex_env_i(GL_TEXTURE_ENV, GL_COMBINE_RGB)?, [GL_MODULATE as i32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_tex_env_i(&self, target: GLenum, pname: GLenum) -> GlResult<Vec<GLint>> {
         self.outside_begin_end()?;
         let (values, float) = self.textures.unit().env.get(target, pname)?;
@@ -344,6 +548,19 @@ impl Context {
 
     /// The bytes glTexImage reads at its pointer under the unpack modes (0 for arguments
     /// the command rejects).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::texture::TexImageArgs, gl::*, Context};
+    /// let ctx = Context::new();
+    /// let args = TexImageArgs {
+    ///     target: GL_TEXTURE_2D, level: 0, internal_format: GL_RGB as i32,
+    ///     size: [3, 2, 1], border: 0, format: GL_RGB, ty: GL_UNSIGNED_BYTE,
+    /// };
+    /// // Rows of 9 bytes padded to the unpack alignment of 4; the last row unpadded.
+    /// assert_eq!(ctx.tex_image_span(2, &args), 12 + 9);
+    /// ```
     pub fn tex_image_span(&self, dimensions: usize, args: &TexImageArgs) -> usize {
         let Ok(format) = PixelFormat::new(args.format, args.ty) else {
             return 0;
@@ -357,6 +574,18 @@ impl Context {
     }
 
     /// The bytes glTexSubImage reads.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::texture::SubImageArgs, gl::*, Context};
+    /// let ctx = Context::new();
+    /// let args = SubImageArgs {
+    ///     target: GL_TEXTURE_2D, level: 0, offset: [0, 0, 0], size: [2, 2, 1],
+    ///     format: GL_RGBA, ty: GL_UNSIGNED_BYTE,
+    /// };
+    /// assert_eq!(ctx.tex_sub_image_span(2, &args), 16);
+    /// ```
     pub fn tex_sub_image_span(&self, dimensions: usize, args: &SubImageArgs) -> usize {
         self.tex_image_span(
             dimensions,
@@ -490,6 +719,24 @@ impl Context {
     /// format and type, internal format, their agreement, then the sizes GL 1.5 takes
     /// (powers of two plus the border, at most the maximum: for a proxy, no error but a
     /// zeroed proxy image).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::texture::TexImageArgs, gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// let args = TexImageArgs {
+    ///     target: GL_TEXTURE_2D, level: 0, internal_format: GL_RGBA8 as i32,
+    ///     size: [2, 2, 1], border: 0, format: GL_RGBA, ty: GL_UNSIGNED_BYTE,
+    /// };
+    /// let texels: Vec<u8> = (0..16).map(|i| i * 16).collect();
+    /// ctx.tex_image(2, &args, &texels)?;
+    /// assert_eq!(ctx.get_tex_level_parameter(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH)?, [2]);
+    /// let mut back = vec![0u8; 16];
+    /// ctx.get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, &mut back)?;
+    /// assert_eq!(back, texels);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn tex_image(&mut self, dimensions: usize, args: &TexImageArgs, pixels: &[u8]) -> GlResult {
         self.outside_begin_end()?;
         let image = ImageTarget::of(args.target, dimensions, true)?;
@@ -518,6 +765,19 @@ impl Context {
     /// glCopyTexImage1D / 2D (§3.8.2). fflight's framebuffer holds nothing drawn: every
     /// pixel read is (0, 0, 0, 0) (depth 0), which then goes through pixel transfer like
     /// any copied pixel. The unsized internal formats 1-4 are GL_INVALID_VALUE here.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.copy_tex_image(2, GL_TEXTURE_2D, 0, GL_RGBA as i32, [4, 4], 0)?;
+    /// assert_eq!(ctx.get_tex_level_parameter(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT)?, [4]);
+    /// let mut texels = vec![1u8; 64];
+    /// ctx.get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, &mut texels)?;
+    /// assert!(texels.iter().all(|&b| b == 0)); // the empty framebuffer's pixels
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     #[allow(clippy::too_many_arguments)]
     pub fn copy_tex_image(
         &mut self,
@@ -634,6 +894,29 @@ impl Context {
 
     /// glTexSubImage1D / 2D / 3D (§3.8.2): `pixels` holds `tex_sub_image_span` bytes; empty
     /// (NULL) changes nothing.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::texture::{SubImageArgs, TexImageArgs}, gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// let image = TexImageArgs {
+    ///     target: GL_TEXTURE_1D, level: 0, internal_format: GL_RGBA8 as i32,
+    ///     size: [4, 1, 1], border: 0, format: GL_RGBA, ty: GL_UNSIGNED_BYTE,
+    /// };
+    /// ctx.tex_image(1, &image, &[])?; // zeros
+    /// let region = SubImageArgs {
+    ///     target: GL_TEXTURE_1D, level: 0, offset: [1, 0, 0], size: [1, 1, 1],
+    ///     format: GL_RGBA, ty: GL_UNSIGNED_BYTE,
+    /// };
+    /// ctx.tex_sub_image(1, &region, &[255, 255, 255, 255])?;
+    /// let mut back = [0u8; 16];
+    /// ctx.get_tex_image(GL_TEXTURE_1D, 0, GL_RGBA, GL_UNSIGNED_BYTE, &mut back)?;
+    /// assert_eq!(back[4..8], [255; 4]);
+    /// let outside = SubImageArgs { offset: [4, 0, 0], ..region };
+    /// assert_eq!(ctx.tex_sub_image(1, &outside, &[0; 4]), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn tex_sub_image(
         &mut self,
         dimensions: usize,
@@ -662,6 +945,19 @@ impl Context {
 
     /// glCopyTexSubImage1D / 2D / 3D (§3.8.2): the region gets the empty framebuffer's
     /// pixels (see `copy_tex_image`).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::texture::SubImageArgs, gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// let region = SubImageArgs {
+    ///     target: GL_TEXTURE_2D, level: 0, offset: [0, 0, 0], size: [1, 1, 1],
+    ///     format: GL_RGBA, ty: GL_UNSIGNED_BYTE,
+    /// };
+    /// // No image at level 0 yet.
+    /// assert_eq!(ctx.copy_tex_sub_image(2, &region), Err(GlError::InvalidOperation));
+    /// ```
     pub fn copy_tex_sub_image(&mut self, dimensions: usize, args: &SubImageArgs) -> GlResult {
         let (image, level) = self.check_sub_image(dimensions, args, Ok(None))?;
         let size = image_size(dimensions, args.size).map(|s| s as usize);
@@ -702,6 +998,17 @@ impl Context {
 
     /// glGetTexLevelParameterfv / iv (§6.1.3): an image that does not exist reports width,
     /// height, depth, border and sizes 0 and internal format 1 (table 6.17).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let ctx = Context::new();
+    /// // No image: width 0 and internal format 1.
+    /// assert_eq!(ctx.get_tex_level_parameter(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH)?, [0]);
+    /// assert_eq!(ctx.get_tex_level_parameter(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT)?, [1]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_tex_level_parameter(
         &self,
         target: GLenum,
@@ -745,6 +1052,17 @@ impl Context {
 
     /// The bytes glGetTexImage writes under the pack modes (0 for arguments it rejects or an
     /// image that does not exist).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.get_tex_image_span(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE), 0); // no image
+    /// ctx.copy_tex_image(2, GL_TEXTURE_2D, 0, GL_RGB as i32, [2, 2], 0)?;
+    /// assert_eq!(ctx.get_tex_image_span(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT), 2 * 2 * 16);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_tex_image_span(
         &self,
         target: GLenum,
@@ -777,6 +1095,19 @@ impl Context {
     /// no pixel transfer into `pixels` (`get_tex_image_span` bytes). GL_INVALID_OPERATION for
     /// a depth format and a color image or the other way round; nothing is written for an
     /// image that does not exist.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// ctx.copy_tex_image(2, GL_TEXTURE_2D, 0, GL_RGBA as i32, [1, 1], 0)?;
+    /// let mut out = [0u8; 4];
+    /// ctx.get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, &mut out)?;
+    /// // A color image read as depth.
+    /// assert_eq!(ctx.get_tex_image(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &mut out), Err(GlError::InvalidOperation));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get_tex_image(
         &self,
         target: GLenum,
@@ -812,6 +1143,13 @@ impl Context {
     /// glCompressedTexImage1D / 2D / 3D (§3.8.3): fflight supports no compressed format
     /// (GL_NUM_COMPRESSED_TEXTURE_FORMATS is 0), so every internal format given is
     /// GL_INVALID_ENUM, as is a bad target.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{Context, GlError};
+    /// assert_eq!(Context::new().compressed_tex_image(), Err(GlError::InvalidEnum));
+    /// ```
     pub fn compressed_tex_image(&mut self) -> GlResult {
         self.outside_begin_end()?;
         Err(GlError::InvalidEnum)
@@ -820,6 +1158,15 @@ impl Context {
     /// glCompressedTexSubImage1D / 2D / 3D (§3.8.3): GL_INVALID_ENUM for a bad target,
     /// GL_INVALID_VALUE for a bad level, else GL_INVALID_OPERATION: no image is compressed,
     /// so the format never matches the image's.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let mut ctx = Context::new();
+    /// assert_eq!(ctx.compressed_tex_sub_image(2, GL_TEXTURE_2D, 0), Err(GlError::InvalidOperation));
+    /// assert_eq!(ctx.compressed_tex_sub_image(2, GL_TEXTURE_2D, -1), Err(GlError::InvalidValue));
+    /// ```
     pub fn compressed_tex_sub_image(
         &mut self,
         dimensions: usize,
@@ -833,6 +1180,15 @@ impl Context {
 
     /// glGetCompressedTexImage (§6.1.4): GL_INVALID_ENUM for a bad target, GL_INVALID_VALUE
     /// for a bad level, else GL_INVALID_OPERATION: no image is compressed.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context, GlError};
+    /// let ctx = Context::new();
+    /// assert_eq!(ctx.get_compressed_tex_image(GL_TEXTURE_2D, 0), Err(GlError::InvalidOperation));
+    /// assert_eq!(ctx.get_compressed_tex_image(GL_LIGHT0, 0), Err(GlError::InvalidEnum));
+    /// ```
     pub fn get_compressed_tex_image(&self, target: GLenum, level: GLint) -> GlResult {
         self.outside_begin_end()?;
         ImageTarget::any(target, false)?.check_level(level)?;

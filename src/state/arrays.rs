@@ -10,12 +10,19 @@ use crate::state::texture::MAX_TEXTURE_UNITS;
 /// The arrays fflight draws from, in the order `VertexArrays` stores them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ArrayKind {
+    /// GL_VERTEX_ARRAY.
     Vertex,
+    /// GL_NORMAL_ARRAY.
     Normal,
+    /// GL_COLOR_ARRAY.
     Color,
+    /// GL_TEXTURE_COORD_ARRAY (of the client active texture unit).
     TexCoord,
+    /// GL_EDGE_FLAG_ARRAY.
     EdgeFlag,
+    /// GL_SECONDARY_COLOR_ARRAY.
     SecondaryColor,
+    /// GL_FOG_COORD_ARRAY.
     FogCoord,
     /// Color indices: made current by glArrayElement, used by nothing in RGBA mode.
     Index,
@@ -38,6 +45,14 @@ pub const ALL_KINDS: [ArrayKind; ARRAY_KINDS] = [
 
 impl ArrayKind {
     /// The array glEnableClientState names; `None` for unknown names.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::ArrayKind};
+    /// assert_eq!(ArrayKind::of_client_state(GL_FOG_COORD_ARRAY), Some(ArrayKind::FogCoord));
+    /// assert_eq!(ArrayKind::of_client_state(GL_LIGHTING), None);
+    /// ```
     pub fn of_client_state(array: GLenum) -> Option<ArrayKind> {
         Some(match array {
             GL_VERTEX_ARRAY => ArrayKind::Vertex,
@@ -53,6 +68,13 @@ impl ArrayKind {
     }
 
     /// The array whose pointer glGetPointerv's `pname` asks for.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::ArrayKind};
+    /// assert_eq!(ArrayKind::of_pointer_name(GL_COLOR_ARRAY_POINTER), Some(ArrayKind::Color));
+    /// ```
     pub fn of_pointer_name(pname: GLenum) -> Option<ArrayKind> {
         Some(match pname {
             GL_VERTEX_ARRAY_POINTER => ArrayKind::Vertex,
@@ -104,6 +126,13 @@ impl ArrayKind {
     }
 
     /// Integer colors and normals are normalized (table 2.9); coordinates convert directly.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::arrays::ArrayKind;
+    /// assert!(ArrayKind::Normal.normalized() && !ArrayKind::Vertex.normalized());
+    /// ```
     pub fn normalized(self) -> bool {
         matches!(
             self,
@@ -113,6 +142,14 @@ impl ArrayKind {
 }
 
 /// The size in bytes of a GL component type; `None` for a type no array accepts.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::arrays::component_size};
+/// assert_eq!((component_size(GL_SHORT), component_size(GL_DOUBLE)), (Some(2), Some(8)));
+/// assert_eq!(component_size(GL_BITMAP), None);
+/// ```
 pub fn component_size(component_type: GLenum) -> Option<usize> {
     Some(match component_type {
         GL_BYTE | GL_UNSIGNED_BYTE => 1,
@@ -126,9 +163,11 @@ pub fn component_size(component_type: GLenum) -> Option<usize> {
 /// One vertex array's state (table 6.8).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ClientArray {
+    /// Enabled with glEnableClientState.
     pub enabled: bool,
     /// Components per element.
     pub size: i32,
+    /// The component type (GL_FLOAT, GL_SHORT, ...).
     pub component_type: GLenum,
     /// Bytes from one element to the next as specified: 0 means tightly packed.
     pub stride: i32,
@@ -152,11 +191,33 @@ impl ClientArray {
     }
 
     /// Bytes one element occupies.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::{ArrayKind, VertexArrays}};
+    /// let mut arrays = VertexArrays::default();
+    /// arrays.set_pointer(ArrayKind::Vertex, 3, GL_SHORT, 0, 0x100)?;
+    /// assert_eq!(arrays.get(ArrayKind::Vertex).element_size(), 6);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn element_size(&self) -> usize {
         self.size as usize * component_size(self.component_type).unwrap_or(1)
     }
 
     /// Bytes from one element to the next: the stride, or the element size for 0.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::{ArrayKind, VertexArrays}};
+    /// let mut arrays = VertexArrays::default();
+    /// arrays.set_pointer(ArrayKind::Color, 4, GL_UNSIGNED_BYTE, 0, 0x100)?;
+    /// assert_eq!(arrays.get(ArrayKind::Color).effective_stride(), 4); // 0: tightly packed
+    /// arrays.set_pointer(ArrayKind::Color, 4, GL_UNSIGNED_BYTE, 16, 0x100)?;
+    /// assert_eq!(arrays.get(ArrayKind::Color).effective_stride(), 16);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn effective_stride(&self) -> usize {
         if self.stride == 0 {
             self.element_size()
@@ -167,6 +228,17 @@ impl ClientArray {
 
     /// Bytes elements `first..=last` occupy, counted from the start of element `first`;
     /// `None` if that does not fit the address space.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::{ArrayKind, VertexArrays}};
+    /// let mut arrays = VertexArrays::default();
+    /// arrays.set_pointer(ArrayKind::Vertex, 2, GL_FLOAT, 12, 0x100)?;
+    /// // Elements 1 to 3: two strides, then one element of 8 bytes.
+    /// assert_eq!(arrays.get(ArrayKind::Vertex).span_len(1, 3), Some(2 * 12 + 8));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn span_len(&self, first: usize, last: usize) -> Option<usize> {
         (last - first)
             .checked_mul(self.effective_stride())?
@@ -177,6 +249,18 @@ impl ClientArray {
     /// Element `index` of the array whose bytes start with element `base`, as 4 components
     /// padded with (0, 0, 0, 1) and converted as the array's commands convert them. `bytes`
     /// must hold the element (see `span_len`).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::{ArrayKind, VertexArrays}};
+    /// let mut arrays = VertexArrays::default();
+    /// arrays.set_pointer(ArrayKind::Vertex, 2, GL_FLOAT, 0, 0x100)?;
+    /// let bytes: Vec<u8> = [1.0f32, 2.0, 3.0, 4.0].iter().flat_map(|v| v.to_ne_bytes()).collect();
+    /// // Element 1 of bytes starting at element 0, padded to four components.
+    /// assert_eq!(arrays.get(ArrayKind::Vertex).read(ArrayKind::Vertex, &bytes, 0, 1), [3.0, 4.0, 0.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn read(&self, kind: ArrayKind, bytes: &[u8], base: usize, index: usize) -> [f32; 4] {
         let offset = (index - base) * self.effective_stride();
         let mut out = [0.0, 0.0, 0.0, 1.0];
@@ -192,6 +276,17 @@ impl ClientArray {
 
 /// Decodes `out.len()` components of `component_type` from the front of `bytes` (native byte
 /// order, any alignment): normalized per table 2.9, or converted directly.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::arrays::read_components};
+/// let mut out = [0.0; 2];
+/// read_components(&[255, 0], GL_UNSIGNED_BYTE, true, &mut out);
+/// assert_eq!(out, [1.0, 0.0]);
+/// read_components(&[255, 0], GL_UNSIGNED_BYTE, false, &mut out);
+/// assert_eq!(out, [255.0, 0.0]);
+/// ```
 pub fn read_components(bytes: &[u8], component_type: GLenum, normalize: bool, out: &mut [f32]) {
     fn each<T: Component, const N: usize>(
         bytes: &[u8],
@@ -224,7 +319,9 @@ pub fn read_components(bytes: &[u8], component_type: GLenum, normalize: bool, ou
 /// Where one enabled array's bytes for a draw are: `len` bytes at `address`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ByteSpan {
+    /// The first byte.
     pub address: usize,
+    /// How many bytes.
     pub len: usize,
 }
 
@@ -242,6 +339,7 @@ pub struct VertexArrays {
     /// The buffer objects bound to GL_ARRAY_BUFFER (copied into each array whose pointer is
     /// set) and GL_ELEMENT_ARRAY_BUFFER (where glDrawElements finds its indices).
     pub array_buffer: u32,
+    /// See `array_buffer`.
     pub element_array_buffer: u32,
 }
 
@@ -269,6 +367,15 @@ impl Default for VertexArrays {
 impl VertexArrays {
     /// The array `kind` as the array commands and queries see it: for texture coordinates,
     /// the client active texture unit's.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::{ArrayKind, VertexArrays}};
+    /// let arrays = VertexArrays::default();
+    /// let normals = arrays.get(ArrayKind::Normal);
+    /// assert_eq!((normals.enabled, normals.size, normals.component_type), (false, 3, GL_FLOAT));
+    /// ```
     pub fn get(&self, kind: ArrayKind) -> &ClientArray {
         match (kind, self.client_active_texture) {
             (ArrayKind::TexCoord, unit @ 1..) => &self.other_tex_coords[unit - 1],
@@ -284,11 +391,31 @@ impl VertexArrays {
     }
 
     /// The array `kind` that draws read (texture unit 0's texture coordinates).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::{ArrayKind, VertexArrays}};
+    /// let mut arrays = VertexArrays::default();
+    /// arrays.set_client_active_texture(GL_TEXTURE1)?;
+    /// arrays.set_pointer(ArrayKind::TexCoord, 2, GL_FLOAT, 0, 0x100)?; // unit 1's
+    /// assert_eq!(arrays.get(ArrayKind::TexCoord).size, 2);
+    /// assert_eq!(arrays.drawn(ArrayKind::TexCoord).size, 4); // unit 0's, untouched
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn drawn(&self, kind: ArrayKind) -> &ClientArray {
         &self.arrays[kind as usize]
     }
 
     /// glClientActiveTexture (§2.8): GL_INVALID_ENUM unless `texture` is GL_TEXTUREi of a unit.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::VertexArrays, GlError};
+    /// let mut arrays = VertexArrays::default();
+    /// assert_eq!(arrays.set_client_active_texture(GL_TEXTURE0 + 8), Err(GlError::InvalidEnum));
+    /// ```
     pub fn set_client_active_texture(&mut self, texture: GLenum) -> GlResult {
         let unit = texture.wrapping_sub(GL_TEXTURE0) as usize;
         if unit >= MAX_TEXTURE_UNITS {
@@ -299,6 +426,16 @@ impl VertexArrays {
     }
 
     /// glVertexPointer, glNormalPointer ...: Mesa's order of checks (stride, type, size).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::{ArrayKind, VertexArrays}, GlError};
+    /// let mut arrays = VertexArrays::default();
+    /// // Mesa's order: the stride first.
+    /// assert_eq!(arrays.set_pointer(ArrayKind::Vertex, 5, GL_FLOAT, -4, 0x100), Err(GlError::InvalidValue));
+    /// assert_eq!(arrays.set_pointer(ArrayKind::Vertex, 3, GL_UNSIGNED_BYTE, 0, 0x100), Err(GlError::InvalidEnum));
+    /// ```
     pub fn set_pointer(
         &mut self,
         kind: ArrayKind,
@@ -328,6 +465,18 @@ impl VertexArrays {
 
     /// Every binding to buffer object `name` returns to 0 (it was deleted): GL_ARRAY_BUFFER,
     /// GL_ELEMENT_ARRAY_BUFFER, and the arrays sourced from it go back to client memory.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::{ArrayKind, VertexArrays}};
+    /// let mut arrays = VertexArrays::default();
+    /// arrays.array_buffer = 3;
+    /// arrays.set_pointer(ArrayKind::Vertex, 3, GL_FLOAT, 0, 0)?; // sourced from buffer 3
+    /// arrays.reset_bindings(3); // buffer 3 deleted
+    /// assert_eq!(arrays.array_buffer, 0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn reset_bindings(&mut self, name: u32) {
         let arrays = (self.arrays.iter_mut().chain(&mut self.other_tex_coords))
             .map(|array| &mut array.buffer);
@@ -339,6 +488,17 @@ impl VertexArrays {
     }
 
     /// glEnableClientState / glDisableClientState.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::VertexArrays, GlError};
+    /// let mut arrays = VertexArrays::default();
+    /// arrays.set_enabled(GL_EDGE_FLAG_ARRAY, true)?;
+    /// assert_eq!(arrays.is_enabled(GL_EDGE_FLAG_ARRAY), Some(true));
+    /// assert_eq!(arrays.set_enabled(GL_TEXTURE_2D, true), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set_enabled(&mut self, array: GLenum, enabled: bool) -> GlResult {
         match ArrayKind::of_client_state(array) {
             Some(kind) => self.get_mut(kind).enabled = enabled,
@@ -348,11 +508,32 @@ impl VertexArrays {
     }
 
     /// Whether a client-state array is enabled; `None` if `array` names none.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::VertexArrays};
+    /// let arrays = VertexArrays::default();
+    /// assert_eq!(arrays.is_enabled(GL_INDEX_ARRAY), Some(false));
+    /// assert_eq!(arrays.is_enabled(GL_LIGHTING), None);
+    /// ```
     pub fn is_enabled(&self, array: GLenum) -> Option<bool> {
         ArrayKind::of_client_state(array).map(|kind| self.get(kind).enabled)
     }
 
     /// The enabled arrays, with their kinds.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::{ArrayKind, VertexArrays}};
+    /// let mut arrays = VertexArrays::default();
+    /// arrays.set_enabled(GL_VERTEX_ARRAY, true)?;
+    /// arrays.set_enabled(GL_COLOR_ARRAY, true)?;
+    /// let kinds: Vec<ArrayKind> = arrays.enabled().map(|(kind, _)| kind).collect();
+    /// assert_eq!(kinds, [ArrayKind::Vertex, ArrayKind::Color]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn enabled(&self) -> impl Iterator<Item = (ArrayKind, &ClientArray)> {
         ALL_KINDS
             .into_iter()
@@ -365,6 +546,19 @@ impl VertexArrays {
     /// objects are the context's to read). A NULL pointer is GL's undefined behavior;
     /// fflight's documented choice is GL_INVALID_OPERATION (nothing is drawn).
     /// GL_INVALID_VALUE when the range does not fit the address space.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::{ArrayKind, VertexArrays}};
+    /// let mut arrays = VertexArrays::default();
+    /// arrays.set_pointer(ArrayKind::Vertex, 4, GL_FLOAT, 0, 0x1000)?;
+    /// arrays.set_enabled(GL_VERTEX_ARRAY, true)?;
+    /// let spans = arrays.spans(0, 9)?;
+    /// assert_eq!(spans[ArrayKind::Vertex as usize].map(|s| s.len), Some(160));
+    /// assert!(spans[ArrayKind::Normal as usize].is_none()); // not enabled
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn spans(&self, first: usize, last: usize) -> GlResult<[Option<ByteSpan>; ARRAY_KINDS]> {
         let mut spans = [None; ARRAY_KINDS];
         for (kind, array) in self.enabled().filter(|(_, array)| array.buffer == 0) {
@@ -389,6 +583,18 @@ impl VertexArrays {
     /// disables the others. In client memory a NULL `address` leaves every pointer NULL
     /// (rather than small offsets from NULL, which could only crash); in a buffer object it
     /// is offset 0.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::{ArrayKind, VertexArrays}};
+    /// let mut arrays = VertexArrays::default();
+    /// arrays.set_interleaved(GL_C4UB_V2F, 0, 0x100)?;
+    /// let color = arrays.get(ArrayKind::Color);
+    /// assert_eq!((color.enabled, color.size, color.component_type), (true, 4, GL_UNSIGNED_BYTE));
+    /// assert_eq!(arrays.get(ArrayKind::Vertex).effective_stride(), 12);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set_interleaved(&mut self, format: GLenum, stride: i32, address: usize) -> GlResult {
         if stride < 0 {
             return Err(GlError::InvalidValue);

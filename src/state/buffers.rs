@@ -15,8 +15,11 @@ pub struct BufferObject {
     /// Shared so that a draw can read it while the context changes (nothing writes a store
     /// a draw reads: a mapped store cannot be drawn from).
     pub data: Arc<Vec<u8>>,
+    /// GL_BUFFER_USAGE.
     pub usage: GLenum,
+    /// GL_BUFFER_ACCESS, given by glMapBuffer.
     pub access: GLenum,
+    /// GL_BUFFER_MAPPED.
     pub mapped: bool,
 }
 
@@ -41,6 +44,14 @@ pub struct BufferObjects {
 }
 
 /// GL_INVALID_ENUM unless `target` is a buffer binding point.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::buffers::check_target, GlError};
+/// assert_eq!(check_target(GL_ARRAY_BUFFER), Ok(()));
+/// assert_eq!(check_target(GL_TEXTURE_2D), Err(GlError::InvalidEnum));
+/// ```
 pub fn check_target(target: GLenum) -> GlResult {
     match target {
         GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER => Ok(()),
@@ -71,17 +82,46 @@ fn range(offset: isize, size: isize, len: usize) -> GlResult<std::ops::Range<usi
 
 impl BufferObjects {
     /// glGenBuffers.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::buffers::BufferObjects;
+    /// let mut buffers = BufferObjects::default();
+    /// let names = buffers.generate(2);
+    /// assert_ne!(names[0], names[1]);
+    /// assert!(!buffers.is_buffer(names[0]));
+    /// ```
     pub fn generate(&mut self, count: usize) -> Vec<GLuint> {
         super::names::generate(self.objects.keys().copied(), &mut self.reserved, count)
     }
 
     /// glIsBuffer: whether `name` is an object (a name glGenBuffers returned is not one
     /// until it is bound).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::buffers::BufferObjects;
+    /// let mut buffers = BufferObjects::default();
+    /// buffers.bind(5);
+    /// assert!(buffers.is_buffer(5) && !buffers.is_buffer(0));
+    /// ```
     pub fn is_buffer(&self, name: GLuint) -> bool {
         self.objects.contains_key(&name)
     }
 
     /// Binding `name` (not 0) creates its object if it has none (§2.9).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::buffers::BufferObjects;
+    /// let mut buffers = BufferObjects::default();
+    /// buffers.bind(2);
+    /// assert!(buffers.bound(2)?.data.is_empty()); // a new object has an empty store
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn bind(&mut self, name: GLuint) {
         if name != 0 {
             self.reserved.remove(&name);
@@ -91,12 +131,30 @@ impl BufferObjects {
 
     /// glDeleteBuffers of one name: whether an object was deleted (0 and unused names are
     /// ignored). The caller resets the bindings to it.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::buffers::BufferObjects;
+    /// let mut buffers = BufferObjects::default();
+    /// buffers.bind(2);
+    /// assert!(buffers.delete(2));
+    /// assert!(!buffers.delete(2)); // already gone
+    /// ```
     pub fn delete(&mut self, name: GLuint) -> bool {
         self.reserved.remove(&name);
         self.objects.remove(&name).is_some()
     }
 
     /// The object bound as `name`: GL_INVALID_OPERATION for 0 (no object to modify or query).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{state::buffers::BufferObjects, GlError};
+    /// let buffers = BufferObjects::default();
+    /// assert_eq!(buffers.bound(0).err(), Some(GlError::InvalidOperation));
+    /// ```
     pub fn bound(&self, name: GLuint) -> GlResult<&BufferObject> {
         self.objects.get(&name).ok_or(GlError::InvalidOperation)
     }
@@ -108,6 +166,18 @@ impl BufferObjects {
     /// glBufferData on the object bound as `name`: Mesa's order of checks (binding, size,
     /// usage). A new store of `size` bytes, copied from `data` or zeroed; a mapped store is
     /// unmapped. GL_OUT_OF_MEMORY when the store cannot be allocated.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::buffers::BufferObjects, GlError};
+    /// let mut buffers = BufferObjects::default();
+    /// buffers.bind(1);
+    /// buffers.data(1, 3, Some(&[1, 2, 3]), GL_STREAM_READ)?;
+    /// assert_eq!(buffers.bound(1)?.data.as_slice(), [1, 2, 3]);
+    /// assert_eq!(buffers.data(1, -1, None, GL_STREAM_READ), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn data(
         &mut self,
         name: GLuint,
@@ -137,6 +207,18 @@ impl BufferObjects {
     /// The bytes `offset..offset + size` of the unmapped object bound as `name`, for
     /// glBufferSubData to replace: GL_INVALID_VALUE outside the store, GL_INVALID_OPERATION
     /// while mapped.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::buffers::BufferObjects};
+    /// let mut buffers = BufferObjects::default();
+    /// buffers.bind(1);
+    /// buffers.data(1, 4, None, GL_STATIC_DRAW)?;
+    /// buffers.sub_data_mut(1, 2, 2)?.copy_from_slice(&[9, 9]);
+    /// assert_eq!(buffers.sub_data(1, 0, 4)?, [0, 0, 9, 9]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn sub_data_mut(
         &mut self,
         name: GLuint,
@@ -152,6 +234,17 @@ impl BufferObjects {
     }
 
     /// glGetBufferSubData's bytes, with glBufferSubData's errors.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::buffers::BufferObjects, GlError};
+    /// let mut buffers = BufferObjects::default();
+    /// buffers.bind(1);
+    /// buffers.data(1, 4, None, GL_STATIC_DRAW)?;
+    /// assert_eq!(buffers.sub_data(1, 3, 2).err(), Some(GlError::InvalidValue)); // past the end
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn sub_data(&self, name: GLuint, offset: isize, size: isize) -> GlResult<&[u8]> {
         let object = self.bound(name)?;
         let range = range(offset, size, object.data.len())?;
@@ -163,6 +256,18 @@ impl BufferObjects {
 
     /// glMapBuffer: the store's address, which stays valid until it is unmapped, replaced or
     /// deleted. GL_INVALID_OPERATION if already mapped or (as in Mesa) empty.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::buffers::BufferObjects, GlError};
+    /// let mut buffers = BufferObjects::default();
+    /// buffers.bind(1);
+    /// assert_eq!(buffers.map(1, GL_READ_WRITE), Err(GlError::InvalidOperation)); // empty, as in Mesa
+    /// buffers.data(1, 8, None, GL_STATIC_DRAW)?;
+    /// assert_ne!(buffers.map(1, GL_READ_WRITE)?, 0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn map(&mut self, name: GLuint, access: GLenum) -> GlResult<usize> {
         if !matches!(access, GL_READ_ONLY | GL_WRITE_ONLY | GL_READ_WRITE) {
             return Err(GlError::InvalidEnum);
@@ -178,6 +283,18 @@ impl BufferObjects {
 
     /// glUnmapBuffer: GL_INVALID_OPERATION unless mapped. The store is never lost while
     /// mapped, so the answer is always GL_TRUE.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::buffers::BufferObjects};
+    /// let mut buffers = BufferObjects::default();
+    /// buffers.bind(1);
+    /// buffers.data(1, 8, None, GL_STATIC_DRAW)?;
+    /// buffers.map(1, GL_WRITE_ONLY)?;
+    /// assert!(buffers.unmap(1)?);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn unmap(&mut self, name: GLuint) -> GlResult<bool> {
         let object = self.bound_mut(name)?;
         if !object.mapped {
@@ -189,6 +306,16 @@ impl BufferObjects {
     }
 
     /// glGetBufferParameteriv (table 2.6).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::buffers::BufferObjects};
+    /// let mut buffers = BufferObjects::default();
+    /// buffers.bind(1);
+    /// assert_eq!(buffers.parameter(1, GL_BUFFER_ACCESS)?, GL_READ_WRITE as i32);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn parameter(&self, name: GLuint, pname: GLenum) -> GlResult<i32> {
         let object = self.bound(name)?;
         Ok(match pname {
@@ -201,6 +328,16 @@ impl BufferObjects {
     }
 
     /// glGetBufferPointerv: the mapped store's address, or 0.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::buffers::BufferObjects};
+    /// let mut buffers = BufferObjects::default();
+    /// buffers.bind(1);
+    /// assert_eq!(buffers.map_pointer(1, GL_BUFFER_MAP_POINTER)?, 0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn map_pointer(&mut self, name: GLuint, pname: GLenum) -> GlResult<usize> {
         if pname != GL_BUFFER_MAP_POINTER {
             return Err(GlError::InvalidEnum);
@@ -215,6 +352,19 @@ impl BufferObjects {
 
     /// The store of object `name` for a draw to read: GL_INVALID_OPERATION while it is
     /// mapped (§2.9.1). `None` for 0, which sources from client memory.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::buffers::BufferObjects, GlError};
+    /// let mut buffers = BufferObjects::default();
+    /// assert!(buffers.store_for_draw(0)?.is_none()); // client memory
+    /// buffers.bind(1);
+    /// buffers.data(1, 4, None, GL_STATIC_DRAW)?;
+    /// buffers.map(1, GL_READ_ONLY)?;
+    /// assert_eq!(buffers.store_for_draw(1).err(), Some(GlError::InvalidOperation)); // mapped
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn store_for_draw(&self, name: GLuint) -> GlResult<Option<Arc<Vec<u8>>>> {
         if name == 0 {
             return Ok(None);

@@ -9,21 +9,41 @@ pub const MAX_EVAL_ORDER: usize = 30;
 
 /// The nine kinds of map, in the order of their enums (GL_MAP1_COLOR_4 ... GL_MAP1_VERTEX_4).
 pub const MAP_KINDS: usize = 9;
+/// GL_MAPn_COLOR_4.
 pub const COLOR_4: usize = 0;
+/// GL_MAPn_INDEX.
 pub const INDEX: usize = 1;
+/// GL_MAPn_NORMAL.
 pub const NORMAL: usize = 2;
 /// GL_MAPn_TEXTURE_COORD_1; _2, _3 and _4 follow.
 pub const TEXTURE_COORD_1: usize = 3;
+/// GL_MAPn_VERTEX_3.
 pub const VERTEX_3: usize = 7;
+/// GL_MAPn_VERTEX_4.
 pub const VERTEX_4: usize = 8;
 
 /// Values a control point of map kind `kind` has (table 5.1's k).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::state::eval::{values_per_point, COLOR_4, NORMAL, VERTEX_3};
+/// assert_eq!((values_per_point(COLOR_4), values_per_point(NORMAL), values_per_point(VERTEX_3)), (4, 3, 3));
+/// ```
 pub fn values_per_point(kind: usize) -> usize {
     [4, 1, 3, 1, 2, 3, 4, 3, 4][kind]
 }
 
 /// The kind of a GL_MAP1_* (`dimensions` 1) or GL_MAP2_* (2) target; GL_INVALID_ENUM for
 /// another.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::eval::{map_kind, VERTEX_4}, GlError};
+/// assert_eq!(map_kind(GL_MAP2_VERTEX_4, 2), Ok(VERTEX_4));
+/// assert_eq!(map_kind(GL_MAP2_VERTEX_4, 1), Err(GlError::InvalidEnum)); // a 2D map for glMap1
+/// ```
 pub fn map_kind(target: GLenum, dimensions: usize) -> GlResult<usize> {
     let base = if dimensions == 1 {
         GL_MAP1_COLOR_4
@@ -55,9 +75,11 @@ fn initial_point(kind: usize) -> Vec<f32> {
 /// compacted: point (i, j) (i along u) at `(i * vorder + j) * k`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Map {
+    /// The order along u and along v.
     pub order: [usize; 2],
     /// u1, u2 (and v1, v2).
     pub domain: [f64; 4],
+    /// The control points, compacted (see above).
     pub points: Vec<f32>,
 }
 
@@ -74,7 +96,9 @@ impl Map {
 /// A grid (glMapGrid): segments and domain along u (and v).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Grid {
+    /// The number of segments along u and along v.
     pub segments: [i32; 2],
+    /// u1, u2, v1, v2.
     pub domain: [f64; 4],
 }
 
@@ -93,12 +117,14 @@ impl Default for Grid {
 pub struct EvalAttribs {
     /// GL_MAP1_* and GL_MAP2_* enables, by dimension - 1 and kind.
     pub enabled: [[bool; MAP_KINDS]; 2],
+    /// The grid of glMapGrid1 and of glMapGrid2.
     pub grids: [Grid; 2],
 }
 
 /// Every map of both dimensions.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Maps {
+    /// The maps by dimension - 1 and kind.
     pub maps: [[Map; MAP_KINDS]; 2],
 }
 
@@ -112,11 +138,27 @@ impl Default for Maps {
 
 /// How many values glMap1 reads: `order` points `stride` apart, k values each (0 when the
 /// arguments are rejected, so nothing is read).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::eval::map1_values};
+/// // 3 points of 3 values, 4 apart: the last point's values end the read.
+/// assert_eq!(map1_values(GL_MAP1_VERTEX_3, 4, 3), 2 * 4 + 3);
+/// ```
 pub fn map1_values(target: GLenum, stride: GLint, order: GLint) -> usize {
     map_values(target, 1, [stride, 1], [order, 1])
 }
 
 /// How many values glMap2 reads.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::eval::map2_values};
+/// // 2 x 2 points of 3 values: u stride 3, v stride 6; the last point starts at 3 + 6.
+/// assert_eq!(map2_values(GL_MAP2_VERTEX_3, 3, 2, 6, 2), 3 + 6 + 3);
+/// ```
 pub fn map2_values(
     target: GLenum,
     ustride: GLint,
@@ -146,6 +188,18 @@ impl Maps {
     /// glMap1 / glMap2 (§5.1): Mesa's order of checks (the target, the domain, the orders,
     /// the strides). `points` holds the values `map_values` counts (fewer: a NULL pointer,
     /// GL_INVALID_VALUE).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::eval::Maps, GlError};
+    /// let mut maps = Maps::default();
+    /// maps.set(GL_MAP1_COLOR_4, 1, [0.0, 1.0, 0.0, 0.0], [4, 0], [1, 0], &[1.0, 0.0, 0.0, 1.0])?;
+    /// assert_eq!(maps.get(GL_MAP1_COLOR_4, GL_COEFF)?, [1.0, 0.0, 0.0, 1.0]);
+    /// // u1 = u2 is GL_INVALID_VALUE.
+    /// assert_eq!(maps.set(GL_MAP1_COLOR_4, 1, [1.0, 1.0, 0.0, 0.0], [4, 0], [1, 0], &[0.0; 4]), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set(
         &mut self,
         target: GLenum,
@@ -201,6 +255,16 @@ impl Maps {
     }
 
     /// glGetMap (§6.1.3): GL_COEFF, GL_ORDER or GL_DOMAIN of a map.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::eval::Maps};
+    /// let maps = Maps::default();
+    /// assert_eq!(maps.get(GL_MAP2_TEXTURE_COORD_2, GL_ORDER)?, [1.0, 1.0]);
+    /// assert_eq!(maps.get(GL_MAP2_TEXTURE_COORD_2, GL_DOMAIN)?, [0.0, 1.0, 0.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get(&self, target: GLenum, query: GLenum) -> GlResult<Vec<f64>> {
         let dimensions = if map_kind(target, 1).is_ok() { 1 } else { 2 };
         let map = &self.maps[dimensions - 1][map_kind(target, dimensions)?];
@@ -218,8 +282,11 @@ impl Maps {
 /// normals).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Evaluated {
+    /// The k values at the point.
     pub value: [f64; 4],
+    /// Their derivatives with respect to u.
     pub du: [f64; 4],
+    /// Their derivatives with respect to v.
     pub dv: [f64; 4],
 }
 
@@ -245,6 +312,19 @@ fn de_casteljau(points: &mut [[f64; 4]], t: f64) -> ([f64; 4], [f64; 4]) {
 impl Map {
     /// The map at domain point (u, v) (§5.1: p((u - u1) / (u2 - u1), (v - v1) / (v2 - v1))),
     /// with the derivatives of the value with respect to u and v themselves.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::eval::{Maps, VERTEX_3}};
+    /// let mut maps = Maps::default();
+    /// // A quadratic curve through (0, 0, 0), control (1, 2, 0), (2, 0, 0).
+    /// let points = [0.0, 0.0, 0.0, 1.0, 2.0, 0.0, 2.0, 0.0, 0.0];
+    /// maps.set(GL_MAP1_VERTEX_3, 1, [0.0, 1.0, 0.0, 0.0], [3, 0], [3, 0], &points)?;
+    /// let at = maps.maps[0][VERTEX_3].evaluate(3, 0.5, 0.0);
+    /// assert_eq!(&at.value[..3], [1.0, 1.0, 0.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn evaluate(&self, k: usize, u: f64, v: f64) -> Evaluated {
         let [u1, u2, v1, v2] = self.domain;
         let s = (u - u1) / (u2 - u1);

@@ -9,15 +9,23 @@ use crate::gl::*;
 /// state tables put in the same group).
 #[derive(Clone, Debug, PartialEq)]
 pub struct FogAttribs {
+    /// GL_FOG.
     pub enabled: bool,
+    /// GL_COLOR_SUM.
     pub color_sum: bool,
     /// Clamped to [0, 1].
     pub color: Vec4,
+    /// GL_FOG_INDEX.
     pub index: f32,
+    /// GL_FOG_DENSITY.
     pub density: f32,
+    /// GL_FOG_START.
     pub start: f32,
+    /// GL_FOG_END.
     pub end: f32,
+    /// GL_FOG_MODE.
     pub mode: GLenum,
+    /// GL_FOG_COORD_SRC.
     pub coord_src: GLenum,
 }
 
@@ -38,6 +46,13 @@ impl Default for FogAttribs {
 }
 
 /// How many values a glFog pname takes, or None for a pname that is not fog's.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::fog::fog_param_count};
+/// assert_eq!((fog_param_count(GL_FOG_COLOR), fog_param_count(GL_FOG_END)), (Some(4), Some(1)));
+/// ```
 pub fn fog_param_count(pname: GLenum) -> Option<usize> {
     match pname {
         GL_FOG_COLOR => Some(4),
@@ -55,6 +70,17 @@ fn enum_value(value: f32) -> GLenum {
 impl FogAttribs {
     /// glFog (§3.10): `params` as floats (integer colors already mapped to [-1, 1]). Checks
     /// the pname, then the count, then the value, as Mesa does; nothing changes on an error.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::fog::FogAttribs, GlError};
+    /// let mut fog = FogAttribs::default();
+    /// fog.set(GL_FOG_MODE, &[GL_EXP2 as f32])?;
+    /// assert_eq!(fog.mode, GL_EXP2);
+    /// assert_eq!(fog.set(GL_FOG_MODE, &[GL_LINEAR as f32 + 1.0]), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set(&mut self, pname: GLenum, params: &[f32]) -> GlResult {
         let count = fog_param_count(pname).ok_or(GlError::InvalidEnum)?;
         if params.len() < count {

@@ -25,10 +25,15 @@ pub const CONVOLUTIONS: [GLenum; 3] = [GL_CONVOLUTION_1D, GL_CONVOLUTION_2D, GL_
 /// format): each entry as the internal format keeps it (`TexImage::store`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Entries {
+    /// The internal format, as given.
     pub internal_format: GLenum,
+    /// Its base internal format.
     pub base: Base,
+    /// The component resolutions the internal format keeps.
     pub sizes: ComponentSizes,
+    /// Width (and height, for two-dimensional filters).
     pub size: [usize; 2],
+    /// The entries, row by row.
     pub values: Vec<[f32; 4]>,
 }
 
@@ -45,6 +50,16 @@ impl Entries {
     }
 
     /// Entries of `internal_format` and `size` from RGBA colors.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::imaging::{internal_format_of, Entries}};
+    /// let format = internal_format_of(GL_LUMINANCE8 as i32, false)?;
+    /// let entries = Entries::new(GL_LUMINANCE8, format, [2, 1], &[[0.5, 0.2, 0.1, 1.0], [1.0; 4]]);
+    /// assert_eq!(entries.values.len(), 2);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn new(
         internal_format: GLenum,
         (base, sizes): (Base, ComponentSizes),
@@ -65,6 +80,16 @@ impl Entries {
 
     /// Entry `i` as the RGBA color the queries pack (table 6.1's conversion of a texture
     /// image: luminance in R).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::imaging::{internal_format_of, Entries}};
+    /// let format = internal_format_of(GL_ALPHA8 as i32, false)?;
+    /// let entries = Entries::new(GL_ALPHA8, format, [1, 1], &[[0.3, 0.3, 0.3, 1.0]]);
+    /// assert_eq!(entries.rgba(0), [0.0, 0.0, 0.0, 1.0]); // an alpha table keeps alpha only
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn rgba(&self, i: usize) -> [f32; 4] {
         let [r, g, b, a] = self.values[i];
         match self.base {
@@ -77,6 +102,16 @@ impl Entries {
     }
 
     /// GL_*_RED_SIZE ... GL_*_INTENSITY_SIZE (`k` 0 to 5).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::imaging::{internal_format_of, Entries}};
+    /// let format = internal_format_of(GL_RGB5 as i32, false)?;
+    /// let entries = Entries::new(GL_RGB5, format, [0, 1], &[]);
+    /// assert_eq!((entries.component_size(0), entries.component_size(3)), (5, 0)); // red, alpha
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn component_size(&self, k: usize) -> i32 {
         i32::from(self.sizes[k])
     }
@@ -85,6 +120,14 @@ impl Entries {
 /// An internal format the imaging commands accept (the color ones of table 3.16), with its
 /// base and resolutions; `intensity` says whether GL_INTENSITY* is allowed (not for
 /// histograms and minmax). GL_INVALID_ENUM otherwise.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::imaging::internal_format_of, GlError};
+/// assert!(internal_format_of(GL_INTENSITY8 as i32, false).is_ok());
+/// assert_eq!(internal_format_of(GL_INTENSITY8 as i32, true).err(), Some(GlError::InvalidEnum)); // histograms
+/// ```
 pub fn internal_format_of(format: GLint, histogram: bool) -> GlResult<(Base, ComponentSizes)> {
     match internal_format(format) {
         Some((Base::Depth, _)) | None => Err(GlError::InvalidEnum),
@@ -96,6 +139,7 @@ pub fn internal_format_of(format: GLint, histogram: bool) -> GlResult<(Base, Com
 /// One color table: its entries and its scale and bias (GL_COLOR_TABLE_SCALE, _BIAS).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ColorTable {
+    /// The table's entries.
     pub entries: Entries,
 }
 
@@ -110,7 +154,9 @@ impl Default for ColorTable {
 /// A convolution filter: its entries (a separable filter's row, then its column).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Filter {
+    /// The filter's entries (a separable filter's row).
     pub entries: Entries,
+    /// A separable filter's column (empty otherwise).
     pub column: Vec<[f32; 4]>,
 }
 
@@ -132,13 +178,21 @@ pub struct ImagingModes {
     pub tables_enabled: [bool; 3],
     /// GL_CONVOLUTION_1D, GL_CONVOLUTION_2D, GL_SEPARABLE_2D.
     pub convolutions_enabled: [bool; 3],
+    /// GL_HISTOGRAM.
     pub histogram_enabled: bool,
+    /// GL_MINMAX.
     pub minmax_enabled: bool,
+    /// GL_COLOR_TABLE_SCALE of each table, in `tables_enabled` order.
     pub table_scale: [[f32; 4]; 3],
+    /// GL_COLOR_TABLE_BIAS of each table.
     pub table_bias: [[f32; 4]; 3],
+    /// GL_CONVOLUTION_BORDER_MODE of each filter, in `convolutions_enabled` order.
     pub border_mode: [GLenum; 3],
+    /// GL_CONVOLUTION_BORDER_COLOR of each filter.
     pub border_color: [[f32; 4]; 3],
+    /// GL_CONVOLUTION_FILTER_SCALE of each filter.
     pub filter_scale: [[f32; 4]; 3],
+    /// GL_CONVOLUTION_FILTER_BIAS of each filter.
     pub filter_bias: [[f32; 4]; 3],
 }
 
@@ -162,7 +216,9 @@ impl Default for ImagingModes {
 /// The histogram (§3.6.5): its format, width, sink flag and counts.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Histogram {
+    /// Its format, width and counts.
     pub entries: Entries,
+    /// GL_HISTOGRAM_SINK.
     pub sink: bool,
 }
 
@@ -178,10 +234,15 @@ impl Default for Histogram {
 /// Minmax (§3.6.5): its format, sink flag and the minimum and maximum.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Minmax {
+    /// GL_MINMAX_FORMAT.
     pub internal_format: GLenum,
+    /// Its base internal format.
     pub base: Base,
+    /// GL_MINMAX_SINK.
     pub sink: bool,
+    /// The minimum of each component.
     pub min: [f32; 4],
+    /// The maximum of each component.
     pub max: [f32; 4],
 }
 
@@ -200,15 +261,29 @@ impl Default for Minmax {
 /// The imaging subset's images and results (in no attribute group).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Imaging {
+    /// GL_COLOR_TABLE, GL_POST_CONVOLUTION_COLOR_TABLE, GL_POST_COLOR_MATRIX_COLOR_TABLE.
     pub tables: [ColorTable; 3],
+    /// The proxies of the three tables.
     pub proxy_tables: [ColorTable; 3],
+    /// GL_CONVOLUTION_1D, GL_CONVOLUTION_2D, GL_SEPARABLE_2D.
     pub filters: [Filter; 3],
+    /// GL_HISTOGRAM.
     pub histogram: Histogram,
+    /// GL_PROXY_HISTOGRAM.
     pub proxy_histogram: Histogram,
+    /// GL_MINMAX.
     pub minmax: Minmax,
 }
 
 /// The color table a target names: (index, proxy), or GL_INVALID_ENUM.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::imaging::color_table_target};
+/// assert_eq!(color_table_target(GL_PROXY_POST_COLOR_MATRIX_COLOR_TABLE)?, (2, true));
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn color_table_target(target: GLenum) -> GlResult<(usize, bool)> {
     match target {
         GL_COLOR_TABLE..=GL_POST_COLOR_MATRIX_COLOR_TABLE => {
@@ -222,6 +297,14 @@ pub fn color_table_target(target: GLenum) -> GlResult<(usize, bool)> {
 }
 
 /// The convolution filter a target names, or GL_INVALID_ENUM.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::imaging::convolution_target};
+/// assert_eq!(convolution_target(GL_SEPARABLE_2D)?, 2);
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn convolution_target(target: GLenum) -> GlResult<usize> {
     CONVOLUTIONS
         .iter()
@@ -230,6 +313,15 @@ pub fn convolution_target(target: GLenum) -> GlResult<usize> {
 }
 
 /// A table or histogram width: GL_INVALID_VALUE unless 0 or a power of two; whether it fits.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{state::imaging::table_width, GlError};
+/// assert_eq!(table_width(256), Ok(true));
+/// assert_eq!(table_width(512), Ok(false)); // too wide: GL_TABLE_TOO_LARGE, or a zero proxy
+/// assert_eq!(table_width(6), Err(GlError::InvalidValue));
+/// ```
 pub fn table_width(width: i32) -> GlResult<bool> {
     let width = usize::try_from(width).map_err(|_| GlError::InvalidValue)?;
     if width != 0 && !width.is_power_of_two() {

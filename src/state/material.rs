@@ -7,15 +7,21 @@ use crate::gl::*;
 
 /// Index of the front and back material in `[Material; 2]`.
 pub const FRONT: usize = 0;
+/// Index of the back material.
 pub const BACK: usize = 1;
 
 /// The material of one face.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Material {
+    /// GL_AMBIENT.
     pub ambient: Vec4,
+    /// GL_DIFFUSE.
     pub diffuse: Vec4,
+    /// GL_SPECULAR.
     pub specular: Vec4,
+    /// GL_EMISSION.
     pub emission: Vec4,
+    /// GL_SHININESS.
     pub shininess: f32,
     /// GL_COLOR_INDEXES: ambient, diffuse and specular indexes (stored for queries only).
     pub color_indexes: [f32; 3],
@@ -39,27 +45,71 @@ impl Default for Material {
 pub struct MaterialMask(pub u8);
 
 impl MaterialMask {
+    /// No property.
     pub const NONE: MaterialMask = MaterialMask(0);
+    /// GL_AMBIENT.
     pub const AMBIENT: MaterialMask = MaterialMask(1);
+    /// GL_DIFFUSE.
     pub const DIFFUSE: MaterialMask = MaterialMask(2);
+    /// GL_SPECULAR.
     pub const SPECULAR: MaterialMask = MaterialMask(4);
+    /// GL_EMISSION.
     pub const EMISSION: MaterialMask = MaterialMask(8);
+    /// GL_SHININESS.
     pub const SHININESS: MaterialMask = MaterialMask(16);
+    /// GL_COLOR_INDEXES.
     pub const COLOR_INDEXES: MaterialMask = MaterialMask(32);
 
+    /// Whether every property of `other` is in the set (never for the empty set).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::material::MaterialMask;
+    /// let both = MaterialMask::AMBIENT.union(MaterialMask::DIFFUSE);
+    /// assert!(both.contains(MaterialMask::DIFFUSE));
+    /// assert!(!both.contains(MaterialMask::SPECULAR));
+    /// assert!(!both.contains(MaterialMask::NONE));
+    /// ```
     pub fn contains(self, other: MaterialMask) -> bool {
         self.0 & other.0 == other.0 && other.0 != 0
     }
 
+    /// The properties of both sets.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::material::MaterialMask;
+    /// assert_eq!(MaterialMask::AMBIENT.union(MaterialMask::DIFFUSE), MaterialMask(3));
+    /// ```
     pub fn union(self, other: MaterialMask) -> MaterialMask {
         MaterialMask(self.0 | other.0)
     }
 
+    /// The properties of `self` that are not in `other`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::material::MaterialMask;
+    /// let both = MaterialMask::AMBIENT.union(MaterialMask::DIFFUSE);
+    /// assert_eq!(both.without(MaterialMask::AMBIENT), MaterialMask::DIFFUSE);
+    /// ```
     pub fn without(self, other: MaterialMask) -> MaterialMask {
         MaterialMask(self.0 & !other.0)
     }
 
     /// The properties a glMaterial pname sets, or GL_INVALID_ENUM.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::material::MaterialMask};
+    /// let both = MaterialMask::AMBIENT.union(MaterialMask::DIFFUSE);
+    /// assert_eq!(MaterialMask::of_pname(GL_AMBIENT_AND_DIFFUSE)?, both);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn of_pname(pname: GLenum) -> GlResult<MaterialMask> {
         Ok(match pname {
             GL_AMBIENT => Self::AMBIENT,
@@ -74,6 +124,15 @@ impl MaterialMask {
     }
 
     /// The properties a glColorMaterial mode tracks, or GL_INVALID_ENUM.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::material::MaterialMask, GlError};
+    /// assert_eq!(MaterialMask::of_color_material_mode(GL_EMISSION)?, MaterialMask::EMISSION);
+    /// assert_eq!(MaterialMask::of_color_material_mode(GL_SHININESS), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn of_color_material_mode(mode: GLenum) -> GlResult<MaterialMask> {
         match mode {
             GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => {
@@ -85,6 +144,16 @@ impl MaterialMask {
 }
 
 /// The faces a GL_FRONT / GL_BACK / GL_FRONT_AND_BACK argument names, as `[front, back]`.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::material::faces, GlError};
+/// assert_eq!(faces(GL_FRONT_AND_BACK)?, [true, true]);
+/// assert_eq!(faces(GL_BACK)?, [false, true]);
+/// assert_eq!(faces(GL_LEFT), Err(GlError::InvalidEnum));
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn faces(face: GLenum) -> GlResult<[bool; 2]> {
     match face {
         GL_FRONT => Ok([true, false]),
@@ -95,6 +164,14 @@ pub fn faces(face: GLenum) -> GlResult<[bool; 2]> {
 }
 
 /// How many values a glMaterial / glGetMaterial pname takes, or `None` for a bad pname.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::material::material_param_count};
+/// assert_eq!(material_param_count(GL_SHININESS), Some(1));
+/// assert_eq!(material_param_count(GL_COLOR_INDEXES), Some(3));
+/// ```
 pub fn material_param_count(pname: GLenum) -> Option<usize> {
     match pname {
         GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => Some(4),
@@ -105,6 +182,13 @@ pub fn material_param_count(pname: GLenum) -> Option<usize> {
 }
 
 /// Whether `pname` is a color, converted with the signed-integer color mapping in glMaterialiv.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::material::is_material_color};
+/// assert!(is_material_color(GL_EMISSION) && !is_material_color(GL_SHININESS));
+/// ```
 pub fn is_material_color(pname: GLenum) -> bool {
     matches!(
         pname,
@@ -114,6 +198,17 @@ pub fn is_material_color(pname: GLenum) -> bool {
 
 impl Material {
     /// Stores the properties of `mask` from `params` (validated by the caller).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::material::{Material, MaterialMask};
+    /// use glam::Vec4;
+    /// let mut material = Material::default();
+    /// let red = Vec4::new(1.0, 0.0, 0.0, 1.0);
+    /// material.set(MaterialMask::AMBIENT.union(MaterialMask::DIFFUSE), red);
+    /// assert_eq!((material.ambient, material.diffuse), (red, red));
+    /// ```
     pub fn set(&mut self, mask: MaterialMask, params: Vec4) {
         if mask.contains(MaterialMask::AMBIENT) {
             self.ambient = params;
@@ -136,6 +231,14 @@ impl Material {
     }
 
     /// glGetMaterialfv: the stored value, padded to four.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::material::Material};
+    /// assert_eq!(Material::default().get(GL_DIFFUSE)?, glam::Vec4::new(0.8, 0.8, 0.8, 1.0));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get(&self, pname: GLenum) -> GlResult<Vec4> {
         Ok(match pname {
             GL_AMBIENT => self.ambient,
@@ -157,8 +260,11 @@ impl Material {
 /// glColorMaterial state (§2.14.3).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ColorMaterial {
+    /// GL_COLOR_MATERIAL.
     pub enabled: bool,
+    /// GL_COLOR_MATERIAL_FACE.
     pub face: GLenum,
+    /// GL_COLOR_MATERIAL_PARAMETER.
     pub mode: GLenum,
 }
 
@@ -174,6 +280,18 @@ impl Default for ColorMaterial {
 
 impl ColorMaterial {
     /// The properties of each face that follow the current color: none while disabled.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::material::{ColorMaterial, MaterialMask}};
+    /// let mut color_material = ColorMaterial::default();
+    /// assert_eq!(color_material.tracked(), [MaterialMask::NONE; 2]); // disabled
+    /// color_material.enabled = true;
+    /// color_material.face = GL_FRONT;
+    /// let both = MaterialMask::AMBIENT.union(MaterialMask::DIFFUSE);
+    /// assert_eq!(color_material.tracked(), [both, MaterialMask::NONE]);
+    /// ```
     pub fn tracked(&self) -> [MaterialMask; 2] {
         if !self.enabled {
             return [MaterialMask::NONE; 2];

@@ -11,13 +11,21 @@ pub const MAX_PIXEL_MAP_TABLE: usize = 256;
 /// One direction's storage modes (table 3.1 for unpacking, 4.5 for packing).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PixelStoreModes {
+    /// GL_*_SWAP_BYTES.
     pub swap_bytes: bool,
+    /// GL_*_LSB_FIRST.
     pub lsb_first: bool,
+    /// GL_*_ROW_LENGTH.
     pub row_length: GLint,
+    /// GL_*_IMAGE_HEIGHT.
     pub image_height: GLint,
+    /// GL_*_SKIP_ROWS.
     pub skip_rows: GLint,
+    /// GL_*_SKIP_PIXELS.
     pub skip_pixels: GLint,
+    /// GL_*_SKIP_IMAGES.
     pub skip_images: GLint,
+    /// GL_*_ALIGNMENT.
     pub alignment: GLint,
 }
 
@@ -39,7 +47,9 @@ impl Default for PixelStoreModes {
 /// A glPixelStore parameter as given: glPixelStorei's integer or glPixelStoref's float.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum StoreParam {
+    /// glPixelStorei's.
     Int(GLint),
+    /// glPixelStoref's.
     Float(GLfloat),
 }
 
@@ -64,13 +74,26 @@ impl StoreParam {
 /// The storage modes: client state (GL_CLIENT_PIXEL_STORE_BIT).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct PixelStoreAttribs {
+    /// The GL_PACK_* modes (glReadPixels, glGetTexImage, ...).
     pub pack: PixelStoreModes,
+    /// The GL_UNPACK_* modes (glTexImage, glDrawPixels, ...).
     pub unpack: PixelStoreModes,
 }
 
 impl PixelStoreAttribs {
     /// glPixelStore (§3.6.1): GL_INVALID_ENUM for a pname that is none, GL_INVALID_VALUE for a
     /// negative length or skip, or an alignment other than 1, 2, 4 or 8.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::pixel::{PixelStoreAttribs, StoreParam}, GlError};
+    /// let mut store = PixelStoreAttribs::default();
+    /// store.set(GL_UNPACK_SWAP_BYTES, StoreParam::Int(1))?;
+    /// assert!(store.unpack.swap_bytes);
+    /// assert_eq!(store.set(GL_PACK_SKIP_ROWS, StoreParam::Int(-1)), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set(&mut self, pname: GLenum, param: StoreParam) -> GlResult {
         let (packing, mode) = mode_of(pname).ok_or(GlError::InvalidEnum)?;
         let modes = if packing {
@@ -98,6 +121,15 @@ impl PixelStoreAttribs {
 
     /// The value of a storage mode for glGet, with whether it is a boolean, or None if
     /// `pname` is none.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::pixel::PixelStoreAttribs};
+    /// let store = PixelStoreAttribs::default();
+    /// assert_eq!(store.get(GL_PACK_ALIGNMENT), Some((4, false)));
+    /// assert_eq!(store.get(GL_UNPACK_LSB_FIRST), Some((0, true))); // a boolean
+    /// ```
     pub fn get(&self, pname: GLenum) -> Option<(GLint, bool)> {
         let (packing, mode) = mode_of(pname)?;
         let modes = if packing { &self.pack } else { &self.unpack };
@@ -195,16 +227,42 @@ impl BitmapLayout {
 }
 
 /// The bytes glPolygonStipple reads under the unpack modes.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::state::pixel::{stipple_unpack_span, PixelStoreModes};
+/// let modes = PixelStoreModes { alignment: 8, ..PixelStoreModes::default() };
+/// assert_eq!(stipple_unpack_span(&modes), 31 * 8 + 4);
+/// ```
 pub fn stipple_unpack_span(unpack: &PixelStoreModes) -> usize {
     BitmapLayout::new(unpack, 32, 32).span()
 }
 
 /// The bytes glGetPolygonStipple writes into under the pack modes.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::state::pixel::{stipple_pack_span, PixelStoreModes};
+/// assert_eq!(stipple_pack_span(&PixelStoreModes::default()), 128);
+/// ```
 pub fn stipple_pack_span(pack: &PixelStoreModes) -> usize {
     BitmapLayout::new(pack, 32, 32).span()
 }
 
 /// The 32 rows of a stipple unpacked from `bytes` (at least `stipple_unpack_span` of them).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::state::pixel::{unpack_stipple, PixelStoreModes};
+/// let mut bytes = [0u8; 128];
+/// bytes[0] = 0x80; // the first pixel of the first row
+/// let rows = unpack_stipple(&PixelStoreModes::default(), &bytes)?;
+/// assert_eq!(rows[0], 0x8000_0000);
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn unpack_stipple(unpack: &PixelStoreModes, bytes: &[u8]) -> GlResult<[u32; 32]> {
     let layout = BitmapLayout::new(unpack, 32, 32);
     if bytes.len() < layout.span() {
@@ -220,6 +278,18 @@ pub fn unpack_stipple(unpack: &PixelStoreModes, bytes: &[u8]) -> GlResult<[u32; 
 
 /// Packs the stipple's rows into `bytes` (at least `stipple_pack_span` of them), leaving the
 /// bits that are not the image's as they were.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::state::pixel::{pack_stipple, PixelStoreModes};
+/// let mut rows = [0u32; 32];
+/// rows[31] = 1; // the last pixel of the last row
+/// let mut bytes = [0u8; 128];
+/// pack_stipple(&PixelStoreModes::default(), &rows, &mut bytes)?;
+/// assert_eq!(bytes[127], 1);
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn pack_stipple(pack: &PixelStoreModes, rows: &[u32; 32], bytes: &mut [u8]) -> GlResult {
     let layout = BitmapLayout::new(pack, 32, 32);
     if bytes.len() < layout.span() {
@@ -242,19 +312,26 @@ pub fn pack_stipple(pack: &PixelStoreModes, rows: &[u32; 32], bytes: &mut [u8]) 
 /// the read buffer (§4.3.2).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PixelModeAttribs {
+    /// GL_MAP_COLOR.
     pub map_color: bool,
+    /// GL_MAP_STENCIL.
     pub map_stencil: bool,
+    /// GL_INDEX_SHIFT.
     pub index_shift: GLint,
+    /// GL_INDEX_OFFSET.
     pub index_offset: GLint,
     /// Red, green, blue, alpha, depth.
     pub scale: [f32; 5],
+    /// Red, green, blue, alpha, depth.
     pub bias: [f32; 5],
     /// x, y.
     pub zoom: [f32; 2],
+    /// GL_READ_BUFFER.
     pub read_buffer: GLenum,
     /// The imaging subset's post-convolution and post-color-matrix scales (red to alpha)
     /// then biases: kept and queried (no pixel rectangle goes through them).
     pub post_convolution: [f32; 8],
+    /// The same for the color matrix.
     pub post_color_matrix: [f32; 8],
 }
 
@@ -309,6 +386,16 @@ impl PixelModeAttribs {
 
     /// glPixelTransfer (§3.6.3), with the parameter as a float (glPixelTransferi's converts
     /// exactly enough); integer modes are rounded.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::pixel::{PixelModeAttribs, TransferValue}};
+    /// let mut mode = PixelModeAttribs::default();
+    /// mode.set_transfer(GL_INDEX_SHIFT, 2.6)?; // rounded
+    /// assert_eq!(mode.transfer(GL_INDEX_SHIFT), Some(TransferValue::Int(3)));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set_transfer(&mut self, pname: GLenum, param: f32) -> GlResult {
         if let Some(value) = self.post_transfer_mut(pname) {
             *value = param;
@@ -332,6 +419,16 @@ impl PixelModeAttribs {
     }
 
     /// A transfer mode's value (a float, or an integer with whether it is a boolean), or None.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::pixel::{PixelModeAttribs, TransferValue}};
+    /// let mode = PixelModeAttribs::default();
+    /// assert_eq!(mode.transfer(GL_MAP_COLOR), Some(TransferValue::Bool(false)));
+    /// assert_eq!(mode.transfer(GL_ALPHA_SCALE), Some(TransferValue::Float(1.0)));
+    /// assert_eq!(mode.transfer(GL_FOG), None);
+    /// ```
     pub fn transfer(&self, pname: GLenum) -> Option<TransferValue> {
         if let Some(value) = self.clone().post_transfer_mut(pname) {
             return Some(TransferValue::Float(*value));
@@ -356,8 +453,11 @@ impl PixelModeAttribs {
 /// A pixel transfer mode's value, in its own type.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TransferValue {
+    /// A boolean mode.
     Bool(bool),
+    /// An integer mode.
     Int(GLint),
+    /// A float mode.
     Float(f32),
 }
 
@@ -365,6 +465,7 @@ pub enum TransferValue {
 /// GL_PIXEL_MAP_A_TO_A); their sizes are GL_PIXEL_MAP_x_SIZE, in the same order.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PixelMaps {
+    /// Each map's entries.
     pub maps: [Vec<f32>; 10],
 }
 
@@ -378,6 +479,13 @@ impl Default for PixelMaps {
 }
 
 /// The index of a pixel map, or None if `map` names none.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::pixel::pixel_map_index};
+/// assert_eq!(pixel_map_index(GL_PIXEL_MAP_A_TO_A), Some(9));
+/// ```
 pub fn pixel_map_index(map: GLenum) -> Option<usize> {
     (GL_PIXEL_MAP_I_TO_I..=GL_PIXEL_MAP_A_TO_A)
         .contains(&map)
@@ -385,12 +493,26 @@ pub fn pixel_map_index(map: GLenum) -> Option<usize> {
 }
 
 /// Whether a map holds indices (I_TO_I, S_TO_S) rather than color components.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::pixel::is_index_map};
+/// assert!(is_index_map(GL_PIXEL_MAP_S_TO_S) && !is_index_map(GL_PIXEL_MAP_I_TO_R));
+/// ```
 pub fn is_index_map(map: GLenum) -> bool {
     matches!(map, GL_PIXEL_MAP_I_TO_I | GL_PIXEL_MAP_S_TO_S)
 }
 
 /// How many values glPixelMap reads: `mapsize` when it is a size GL accepts, else none (the
 /// command reports the error without reading).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::state::pixel::pixel_map_read_count;
+/// assert_eq!((pixel_map_read_count(16), pixel_map_read_count(-1)), (16, 0));
+/// ```
 pub fn pixel_map_read_count(mapsize: GLsizei) -> usize {
     if (1..=MAX_PIXEL_MAP_TABLE as GLsizei).contains(&mapsize) {
         mapsize as usize
@@ -403,6 +525,16 @@ impl PixelMaps {
     /// glPixelMap (§3.6.3), values already converted to floats. Mesa's order: the size, then
     /// the power of two of the maps indexed by an index, then the map name. Color values are
     /// clamped to [0, 1].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::pixel::PixelMaps};
+    /// let mut maps = PixelMaps::default();
+    /// maps.set(GL_PIXEL_MAP_I_TO_B, 2, &[2.0, -1.0])?; // color values clamped
+    /// assert_eq!(maps.get(GL_PIXEL_MAP_I_TO_B)?, [1.0, 0.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set(&mut self, map: GLenum, mapsize: GLsizei, values: &[f32]) -> GlResult {
         if !(1..=MAX_PIXEL_MAP_TABLE as GLsizei).contains(&mapsize) {
             return Err(GlError::InvalidValue);
@@ -424,6 +556,16 @@ impl PixelMaps {
     }
 
     /// glGetPixelMap: the map's values.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::pixel::PixelMaps, GlError};
+    /// let maps = PixelMaps::default();
+    /// assert_eq!(maps.get(GL_PIXEL_MAP_R_TO_R)?, [0.0]);
+    /// assert_eq!(maps.get(GL_FOG).err(), Some(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get(&self, map: GLenum) -> GlResult<&[f32]> {
         let index = pixel_map_index(map).ok_or(GlError::InvalidEnum)?;
         Ok(&self.maps[index])

@@ -27,16 +27,47 @@ fn check_target(target: GLenum) -> GlResult {
 
 impl QueryObjects {
     /// glGenQueries.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::queries::QueryObjects;
+    /// let mut queries = QueryObjects::default();
+    /// let ids = queries.generate(2);
+    /// assert_eq!(ids.len(), 2);
+    /// assert!(!queries.is_query(ids[0]));
+    /// ```
     pub fn generate(&mut self, count: usize) -> Vec<u32> {
         super::names::generate(self.objects.iter().copied(), &mut self.reserved, count)
     }
 
     /// glIsQuery: a name becomes a query object when a query begins with it.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::queries::QueryObjects};
+    /// let mut queries = QueryObjects::default();
+    /// queries.begin(GL_SAMPLES_PASSED, 4)?;
+    /// assert!(queries.is_query(4));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn is_query(&self, id: u32) -> bool {
         self.objects.contains(&id)
     }
 
     /// glDeleteQueries of one name; deleting the active query ends it.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::queries::QueryObjects};
+    /// let mut queries = QueryObjects::default();
+    /// queries.begin(GL_SAMPLES_PASSED, 4)?;
+    /// queries.delete(4); // ends it
+    /// assert_eq!(queries.target_parameter(GL_SAMPLES_PASSED, GL_CURRENT_QUERY)?, 0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn delete(&mut self, id: u32) {
         self.reserved.remove(&id);
         if self.objects.remove(&id) && self.active == id {
@@ -45,6 +76,16 @@ impl QueryObjects {
     }
 
     /// glBeginQuery, in Mesa's order of checks: target, id 0, a query already active.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::queries::QueryObjects, GlError};
+    /// let mut queries = QueryObjects::default();
+    /// queries.begin(GL_SAMPLES_PASSED, 1)?;
+    /// assert_eq!(queries.begin(GL_SAMPLES_PASSED, 2), Err(GlError::InvalidOperation)); // one at a time
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn begin(&mut self, target: GLenum, id: u32) -> GlResult {
         check_target(target)?;
         if id == 0 || self.active != 0 {
@@ -57,6 +98,14 @@ impl QueryObjects {
     }
 
     /// glEndQuery: GL_INVALID_OPERATION when no query is active.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::queries::QueryObjects, GlError};
+    /// let mut queries = QueryObjects::default();
+    /// assert_eq!(queries.end(GL_SAMPLES_PASSED), Err(GlError::InvalidOperation));
+    /// ```
     pub fn end(&mut self, target: GLenum) -> GlResult {
         check_target(target)?;
         if self.active == 0 {
@@ -67,6 +116,14 @@ impl QueryObjects {
     }
 
     /// glGetQueryiv: GL_CURRENT_QUERY or GL_QUERY_COUNTER_BITS (0: see the module).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::queries::QueryObjects};
+    /// assert_eq!(QueryObjects::default().target_parameter(GL_SAMPLES_PASSED, GL_QUERY_COUNTER_BITS)?, 0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn target_parameter(&self, target: GLenum, pname: GLenum) -> GlResult<i32> {
         check_target(target)?;
         match pname {
@@ -78,6 +135,17 @@ impl QueryObjects {
 
     /// glGetQueryObject{i,ui}v: GL_QUERY_RESULT (always 0) or GL_QUERY_RESULT_AVAILABLE
     /// (always true); GL_INVALID_OPERATION for a name that is no query or the active one.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::queries::QueryObjects};
+    /// let mut queries = QueryObjects::default();
+    /// queries.begin(GL_SAMPLES_PASSED, 1)?;
+    /// queries.end(GL_SAMPLES_PASSED)?;
+    /// assert_eq!(queries.object_parameter(1, GL_QUERY_RESULT_AVAILABLE)?, 1);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn object_parameter(&self, id: u32, pname: GLenum) -> GlResult<u32> {
         if !self.objects.contains(&id) || id == self.active {
             return Err(GlError::InvalidOperation);

@@ -10,9 +10,11 @@ use crate::lighting::homogenize;
 /// One coordinate's generation state.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CoordGen {
+    /// GL_TEXTURE_GEN_S (or _T, _R, _Q) enabled.
     pub enabled: bool,
     /// GL_TEXTURE_GEN_MODE.
     pub mode: GLenum,
+    /// GL_OBJECT_PLANE.
     pub object_plane: Vec4,
     /// In eye coordinates: the plane given, times the inverse of the modelview matrix
     /// current when it was given.
@@ -22,6 +24,7 @@ pub struct CoordGen {
 /// The generation state of a texture unit, for s, t, r and q.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TexGen {
+    /// s, t, r and q.
     pub coords: [CoordGen; 4],
 }
 
@@ -45,6 +48,14 @@ impl Default for TexGen {
 }
 
 /// The index (s 0 to q 3) of glTexGen's `coord`.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::texgen::coord_index};
+/// assert_eq!(coord_index(GL_R), Ok(2));
+/// assert!(coord_index(GL_TEXTURE_GEN_S).is_err());
+/// ```
 pub fn coord_index(coord: GLenum) -> GlResult<usize> {
     match coord {
         GL_S..=GL_Q => Ok((coord - GL_S) as usize),
@@ -53,6 +64,13 @@ pub fn coord_index(coord: GLenum) -> GlResult<usize> {
 }
 
 /// How many values glTexGen's `pname` takes (0 for a bad pname: the command rejects it).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::texgen::tex_gen_param_count};
+/// assert_eq!((tex_gen_param_count(GL_EYE_PLANE), tex_gen_param_count(GL_TEXTURE_GEN_MODE)), (4, 1));
+/// ```
 pub fn tex_gen_param_count(pname: GLenum) -> usize {
     match pname {
         GL_TEXTURE_GEN_MODE => 1,
@@ -65,6 +83,19 @@ impl TexGen {
     /// glTexGen{ifd}v (§2.11.4) for coordinate `coord` (0 to 3): Mesa's order of checks, the
     /// pname, then the mode (GL_SPHERE_MAP for s and t only, GL_NORMAL_MAP and
     /// GL_REFLECTION_MAP not for q). `modelview` turns an eye plane into eye coordinates.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texgen::TexGen};
+    /// use glam::DMat4;
+    /// let mut generation = TexGen::default();
+    /// let modelview = DMat4::from_translation(glam::DVec3::new(0.0, 0.0, -1.0));
+    /// generation.set(0, GL_EYE_PLANE, &[0.0, 0.0, 1.0, 0.0], &modelview)?;
+    /// // The plane times the inverse modelview: z >= -1 becomes z + 1 >= 0.
+    /// assert_eq!(generation.get(0, GL_EYE_PLANE)?, [0.0, 0.0, 1.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set(
         &mut self,
         coord: usize,
@@ -107,6 +138,14 @@ impl TexGen {
     }
 
     /// glGetTexGen{ifd}v: the mode, or a plane (the eye plane in eye coordinates).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texgen::TexGen};
+    /// assert_eq!(TexGen::default().get(3, GL_TEXTURE_GEN_MODE)?, [GL_EYE_LINEAR as f64]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get(&self, coord: usize, pname: GLenum) -> GlResult<Vec<f64>> {
         let coord_gen = &self.coords[coord];
         let plane = |p: Vec4| p.as_dvec4().to_array().to_vec();
@@ -119,6 +158,16 @@ impl TexGen {
     }
 
     /// The generation a vertex needs, or None when no coordinate is generated.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texgen::TexGen;
+    /// let mut generation = TexGen::default();
+    /// assert!(generation.prepared().is_none()); // nothing enabled
+    /// generation.coords[0].enabled = true;
+    /// assert!(generation.prepared().is_some_and(|p| p.coords[0].is_some() && p.coords[1].is_none()));
+    /// ```
     pub fn prepared(&self) -> Option<PreparedTexGen> {
         self.coords
             .iter()
@@ -140,10 +189,15 @@ impl TexGen {
 /// One enabled coordinate's function.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Generation {
+    /// GL_OBJECT_LINEAR with its plane.
     ObjectLinear(DVec4),
+    /// GL_EYE_LINEAR with its plane in eye coordinates.
     EyeLinear(DVec4),
+    /// GL_SPHERE_MAP.
     SphereMap,
+    /// GL_REFLECTION_MAP.
     ReflectionMap,
+    /// GL_NORMAL_MAP.
     NormalMap,
 }
 
@@ -151,6 +205,7 @@ pub enum Generation {
 /// texture coordinates).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PreparedTexGen {
+    /// s, t, r and q.
     pub coords: [Option<Generation>; 4],
 }
 
@@ -158,14 +213,31 @@ pub struct PreparedTexGen {
 /// normal (after rescaling and normalization, §2.11.3).
 #[derive(Clone, Copy, Debug)]
 pub struct GenInput {
+    /// Object coordinates.
     pub object: DVec4,
+    /// Eye coordinates.
     pub eye: DVec4,
+    /// The eye-space normal.
     pub normal: DVec3,
 }
 
 impl PreparedTexGen {
     /// The texture coordinates of a vertex whose current ones are `current` (§2.11.4), in
     /// double precision.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texgen::{GenInput, TexGen};
+    /// use glam::{DVec3, DVec4, Vec4};
+    /// let mut generation = TexGen::default();
+    /// // Initially GL_EYE_LINEAR with s's eye plane (1, 0, 0, 0): s = eye x.
+    /// generation.coords[0].enabled = true;
+    /// let prepared = generation.prepared().unwrap();
+    /// let eye = DVec4::new(0.25, 0.0, 0.0, 1.0);
+    /// let input = GenInput { object: DVec4::W, eye, normal: DVec3::Z };
+    /// assert_eq!(prepared.generate(&input, Vec4::new(9.0, 8.0, 7.0, 1.0)), Vec4::new(0.25, 8.0, 7.0, 1.0));
+    /// ```
     pub fn generate(&self, input: &GenInput, current: Vec4) -> Vec4 {
         let mut reflection = None;
         let mut reflect = || {

@@ -17,13 +17,18 @@ pub const MAX_TEXTURE_LOD_BIAS: f32 = 16.0;
 /// The four texture targets of GL 1.5, in the order of `TextureUnit::bindings`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Target {
+    /// GL_TEXTURE_1D.
     Texture1D,
+    /// GL_TEXTURE_2D.
     Texture2D,
+    /// GL_TEXTURE_3D.
     Texture3D,
+    /// GL_TEXTURE_CUBE_MAP.
     CubeMap,
 }
 
 impl Target {
+    /// The four targets, in order.
     pub const ALL: [Target; 4] = [
         Target::Texture1D,
         Target::Texture2D,
@@ -32,10 +37,26 @@ impl Target {
     ];
 
     /// The target glBindTexture, glTexParameter and glEnable name, or None.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture::Target};
+    /// assert_eq!(Target::of(GL_TEXTURE_3D), Some(Target::Texture3D));
+    /// assert_eq!(Target::of(GL_PROXY_TEXTURE_3D), None);
+    /// ```
     pub fn of(target: GLenum) -> Option<Target> {
         Target::ALL.into_iter().find(|t| t.enumeration() == target)
     }
 
+    /// The target's enum (GL_TEXTURE_1D ...).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture::Target};
+    /// assert_eq!(Target::CubeMap.enumeration(), GL_TEXTURE_CUBE_MAP);
+    /// ```
     pub fn enumeration(self) -> GLenum {
         match self {
             Target::Texture1D => GL_TEXTURE_1D,
@@ -46,6 +67,13 @@ impl Target {
     }
 
     /// The query of the unit's binding of this target.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture::Target};
+    /// assert_eq!(Target::Texture2D.binding_pname(), GL_TEXTURE_BINDING_2D);
+    /// ```
     pub fn binding_pname(self) -> GLenum {
         match self {
             Target::Texture1D => GL_TEXTURE_BINDING_1D,
@@ -56,6 +84,13 @@ impl Target {
     }
 
     /// The proxy target of the same kind.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture::Target};
+    /// assert_eq!(Target::Texture1D.proxy(), GL_PROXY_TEXTURE_1D);
+    /// ```
     pub fn proxy(self) -> GLenum {
         match self {
             Target::Texture1D => GL_PROXY_TEXTURE_1D,
@@ -66,6 +101,13 @@ impl Target {
     }
 
     /// The number of dimensions of its images.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::Target;
+    /// assert_eq!((Target::Texture3D.dimensions(), Target::CubeMap.dimensions()), (3, 2));
+    /// ```
     pub fn dimensions(self) -> usize {
         match self {
             Target::Texture1D => 1,
@@ -76,6 +118,13 @@ impl Target {
 
     /// GL_MAX_TEXTURE_SIZE, GL_MAX_3D_TEXTURE_SIZE or GL_MAX_CUBE_MAP_TEXTURE_SIZE: small
     /// enough that a largest image, stored as four floats a texel, fits in memory.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::Target;
+    /// assert_eq!((Target::Texture2D.max_size(), Target::Texture3D.max_size()), (2048, 128));
+    /// ```
     pub fn max_size(self) -> i32 {
         match self {
             Target::Texture1D | Target::Texture2D => 2048,
@@ -85,6 +134,13 @@ impl Target {
     }
 
     /// The number of levels: log2 of the largest size, plus one.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::Target;
+    /// assert_eq!(Target::Texture2D.levels(), 12); // 2048 down to 1
+    /// ```
     pub fn levels(self) -> usize {
         self.max_size().trailing_zeros() as usize + 1
     }
@@ -94,7 +150,9 @@ impl Target {
 /// the bound objects.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TextureParams {
+    /// GL_TEXTURE_MIN_FILTER.
     pub min_filter: GLenum,
+    /// GL_TEXTURE_MAG_FILTER.
     pub mag_filter: GLenum,
     /// S, T, R.
     pub wrap: [GLenum; 3],
@@ -102,13 +160,21 @@ pub struct TextureParams {
     pub border_color: [f32; 4],
     /// Clamped to [0, 1] when set.
     pub priority: f32,
+    /// GL_TEXTURE_MIN_LOD.
     pub min_lod: f32,
+    /// GL_TEXTURE_MAX_LOD.
     pub max_lod: f32,
+    /// GL_TEXTURE_BASE_LEVEL.
     pub base_level: GLint,
+    /// GL_TEXTURE_MAX_LEVEL.
     pub max_level: GLint,
+    /// GL_GENERATE_MIPMAP.
     pub generate_mipmap: bool,
+    /// GL_DEPTH_TEXTURE_MODE.
     pub depth_texture_mode: GLenum,
+    /// GL_TEXTURE_COMPARE_MODE.
     pub compare_mode: GLenum,
+    /// GL_TEXTURE_COMPARE_FUNC.
     pub compare_func: GLenum,
 }
 
@@ -134,6 +200,14 @@ impl Default for TextureParams {
 
 /// How many values a glTexParameter pname takes (GL_TEXTURE_BORDER_COLOR four, the others
 /// one), or None for a pname that is none.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::texture::tex_parameter_count};
+/// assert_eq!(tex_parameter_count(GL_TEXTURE_BORDER_COLOR), Some(4));
+/// assert_eq!(tex_parameter_count(GL_TEXTURE_WRAP_R), Some(1));
+/// ```
 pub fn tex_parameter_count(pname: GLenum) -> Option<usize> {
     match pname {
         GL_TEXTURE_BORDER_COLOR => Some(4),
@@ -205,6 +279,17 @@ impl TextureParams {
     /// directly, their border color already mapped to [0, 1]): GL_INVALID_ENUM for an enum
     /// value a pname does not take, GL_INVALID_VALUE for a negative base or max level.
     /// Nothing changes on an error.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture::TextureParams, GlError};
+    /// let mut params = TextureParams::default();
+    /// params.set(GL_TEXTURE_MIN_LOD, &[-4.0])?;
+    /// assert_eq!(params.min_lod, -4.0);
+    /// assert_eq!(params.set(GL_TEXTURE_BASE_LEVEL, &[-1.0]), Err(GlError::InvalidValue));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set(&mut self, pname: GLenum, values: &[f32]) -> GlResult {
         let count = tex_parameter_count(pname).ok_or(GlError::InvalidEnum)?;
         let values = values.get(..count).ok_or(GlError::InvalidValue)?;
@@ -254,13 +339,21 @@ impl TextureParams {
 /// ARB_texture_env_combine with GL 1.4's crossbar sources (GL_TEXTUREn).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Combine {
+    /// GL_COMBINE_RGB.
     pub combine_rgb: GLenum,
+    /// GL_COMBINE_ALPHA.
     pub combine_alpha: GLenum,
+    /// GL_SOURCE0_RGB to GL_SOURCE2_RGB.
     pub source_rgb: [GLenum; 3],
+    /// GL_SOURCE0_ALPHA to GL_SOURCE2_ALPHA.
     pub source_alpha: [GLenum; 3],
+    /// GL_OPERAND0_RGB to GL_OPERAND2_RGB.
     pub operand_rgb: [GLenum; 3],
+    /// GL_OPERAND0_ALPHA to GL_OPERAND2_ALPHA.
     pub operand_alpha: [GLenum; 3],
+    /// GL_RGB_SCALE.
     pub rgb_scale: f32,
+    /// GL_ALPHA_SCALE.
     pub alpha_scale: f32,
 }
 
@@ -282,10 +375,13 @@ impl Default for Combine {
 /// One texture unit's environment (table 6.19) and its LOD bias (GL_TEXTURE_FILTER_CONTROL).
 #[derive(Clone, Debug, PartialEq)]
 pub struct TexEnv {
+    /// GL_TEXTURE_ENV_MODE.
     pub mode: GLenum,
     /// Clamped to [0, 1] when set.
     pub color: [f32; 4],
+    /// The combiner state (GL_COMBINE mode).
     pub combine: Combine,
+    /// GL_TEXTURE_LOD_BIAS.
     pub lod_bias: f32,
 }
 
@@ -302,6 +398,15 @@ impl Default for TexEnv {
 
 /// How many values a glTexEnv pname takes for `target` (the color four, the others one), or
 /// None when the pair is none.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::texture::tex_env_count};
+/// assert_eq!(tex_env_count(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR), Some(4));
+/// assert_eq!(tex_env_count(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS), Some(1));
+/// assert_eq!(tex_env_count(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_ENV_MODE), None);
+/// ```
 pub fn tex_env_count(target: GLenum, pname: GLenum) -> Option<usize> {
     match (target, pname) {
         (GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR) => Some(4),
@@ -361,6 +466,16 @@ impl TexEnv {
     /// color already mapped to [0, 1]): Mesa's order, target, pname, then the value
     /// (GL_INVALID_ENUM, or GL_INVALID_VALUE for a scale other than 1, 2 or 4). The color is
     /// clamped to [0, 1]; the LOD bias is stored as given.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture::TexEnv};
+    /// let mut env = TexEnv::default();
+    /// env.set(GL_TEXTURE_ENV, GL_COMBINE_RGB, &[GL_DOT3_RGB as f32])?;
+    /// assert_eq!(env.combine.combine_rgb, GL_DOT3_RGB);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set(&mut self, target: GLenum, pname: GLenum, values: &[f32]) -> GlResult {
         if !matches!(target, GL_TEXTURE_ENV | GL_TEXTURE_FILTER_CONTROL) {
             return Err(GlError::InvalidEnum);
@@ -433,6 +548,16 @@ impl TexEnv {
 
     /// glGetTexEnv's values: the color and the LOD bias and scales as floats (`true`), the
     /// others as enums.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture::TexEnv};
+    /// let env = TexEnv::default();
+    /// assert_eq!(env.get(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE)?, (vec![GL_MODULATE as f32], false)); // an enum
+    /// assert_eq!(env.get(GL_TEXTURE_ENV, GL_RGB_SCALE)?, (vec![1.0], true)); // a float
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn get(&self, target: GLenum, pname: GLenum) -> GlResult<(Vec<f32>, bool)> {
         if !matches!(target, GL_TEXTURE_ENV | GL_TEXTURE_FILTER_CONTROL) {
             return Err(GlError::InvalidEnum);
@@ -472,20 +597,34 @@ pub struct TextureUnit {
     pub enabled: [bool; 4],
     /// The names bound, in `Target` order; 0 is the target's default object.
     pub bindings: [GLuint; 4],
+    /// The texture environment.
     pub env: TexEnv,
+    /// The texture coordinate generation state.
     pub tex_gen: crate::state::texgen::TexGen,
 }
 
 /// One texture object: its target (fixed by the first bind), parameters and images.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TextureObject {
+    /// The target, fixed by the first bind.
     pub target: Target,
+    /// glTexParameter's state.
     pub params: TextureParams,
     /// Images by (cube map face, or 0; level); a level absent here has width 0.
     pub images: BTreeMap<(usize, usize), TexImage>,
 }
 
 impl TextureObject {
+    /// An object of `target` with the initial parameters and no image.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture::{Target, TextureObject}};
+    /// let object = TextureObject::new(Target::Texture3D);
+    /// assert!(object.images.is_empty());
+    /// assert_eq!(object.params.wrap, [GL_REPEAT; 3]);
+    /// ```
     pub fn new(target: Target) -> TextureObject {
         TextureObject {
             target,
@@ -501,6 +640,7 @@ impl TextureObject {
 pub struct Textures {
     /// GL_ACTIVE_TEXTURE - GL_TEXTURE0.
     pub active_unit: usize,
+    /// The texture units.
     pub units: [TextureUnit; MAX_TEXTURE_UNITS],
     /// The default objects, in `Target` order.
     pub defaults: [TextureObject; 4],
@@ -526,15 +666,43 @@ impl Default for Textures {
 
 impl Textures {
     /// The active unit.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::Textures;
+    /// assert_eq!(Textures::default().unit().bindings, [0; 4]);
+    /// ```
     pub fn unit(&self) -> &TextureUnit {
         &self.units[self.active_unit]
     }
 
+    /// The active unit, to change.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::Textures;
+    /// let mut textures = Textures::default();
+    /// textures.unit_mut().enabled[1] = true; // GL_TEXTURE_2D on the active unit
+    /// assert!(textures.units[0].enabled[1]);
+    /// ```
     pub fn unit_mut(&mut self) -> &mut TextureUnit {
         &mut self.units[self.active_unit]
     }
 
     /// glActiveTexture (§2.7): GL_INVALID_ENUM unless `texture` is GL_TEXTUREi of a unit.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture::Textures, GlError};
+    /// let mut textures = Textures::default();
+    /// textures.set_active(GL_TEXTURE7)?;
+    /// assert_eq!(textures.active_unit, 7);
+    /// assert_eq!(textures.set_active(GL_TEXTURE0 + 8), Err(GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn set_active(&mut self, texture: GLenum) -> GlResult {
         let unit = texture.wrapping_sub(GL_TEXTURE0) as usize;
         if unit >= MAX_TEXTURE_UNITS {
@@ -545,18 +713,47 @@ impl Textures {
     }
 
     /// glGenTextures.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::Textures;
+    /// let mut textures = Textures::default();
+    /// let names = textures.generate(2);
+    /// assert!(names.iter().all(|&n| n > 0 && !textures.is_texture(n)));
+    /// ```
     pub fn generate(&mut self, count: usize) -> Vec<GLuint> {
         super::names::generate(self.objects.keys().copied(), &mut self.reserved, count)
     }
 
     /// glIsTexture: whether `name` is an object (a name glGenTextures returned is not one
     /// until it is bound).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::{Target, Textures};
+    /// let mut textures = Textures::default();
+    /// textures.bind(Target::Texture2D, 4)?;
+    /// assert!(textures.is_texture(4) && !textures.is_texture(0));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn is_texture(&self, name: GLuint) -> bool {
         self.objects.contains_key(&name)
     }
 
     /// glBindTexture (§3.8.12) on the active unit: binding an unused name creates its object
     /// with `target`; GL_INVALID_OPERATION for an object of another target.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{state::texture::{Target, Textures}, GlError};
+    /// let mut textures = Textures::default();
+    /// textures.bind(Target::CubeMap, 4)?;
+    /// assert_eq!(textures.bind(Target::Texture1D, 4), Err(GlError::InvalidOperation));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn bind(&mut self, target: Target, name: GLuint) -> GlResult {
         if name != 0 {
             let object = self
@@ -574,6 +771,17 @@ impl Textures {
 
     /// glDeleteTextures of one name: every unit's binding to it reverts to 0 (0 and unused
     /// names are ignored).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::{Target, Textures};
+    /// let mut textures = Textures::default();
+    /// textures.bind(Target::Texture2D, 4)?;
+    /// textures.delete(4);
+    /// assert_eq!(textures.unit().bindings[Target::Texture2D as usize], 0);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn delete(&mut self, name: GLuint) {
         self.reserved.remove(&name);
         if name != 0 && self.objects.remove(&name).is_some() {
@@ -588,11 +796,31 @@ impl Textures {
     }
 
     /// The object `name` if it exists (0: none, the defaults have no name).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::{Target, Textures};
+    /// let mut textures = Textures::default();
+    /// assert!(textures.object_mut(4).is_none());
+    /// textures.bind(Target::Texture2D, 4)?;
+    /// textures.object_mut(4).unwrap().params.priority = 0.5;
+    /// assert_eq!(textures.bound(Target::Texture2D).params.priority, 0.5);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn object_mut(&mut self, name: GLuint) -> Option<&mut TextureObject> {
         self.objects.get_mut(&name).filter(|_| name != 0)
     }
 
     /// The object bound to `target` on the active unit.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::{Target, Textures};
+    /// let textures = Textures::default();
+    /// assert_eq!(textures.bound(Target::Texture3D).target, Target::Texture3D); // the default object
+    /// ```
     pub fn bound(&self, target: Target) -> &TextureObject {
         let name = self.unit().bindings[target as usize];
         self.objects
@@ -600,6 +828,16 @@ impl Textures {
             .unwrap_or(&self.defaults[target as usize])
     }
 
+    /// The object bound to `target` on the active unit, to change.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::{Target, Textures};
+    /// let mut textures = Textures::default();
+    /// textures.bound_mut(Target::Texture1D).params.max_level = 3;
+    /// assert_eq!(textures.defaults[Target::Texture1D as usize].params.max_level, 3);
+    /// ```
     pub fn bound_mut(&mut self, target: Target) -> &mut TextureObject {
         let name = self.units[self.active_unit].bindings[target as usize];
         match self.objects.get_mut(&name) {
@@ -624,6 +862,17 @@ pub struct TextureAttribs {
 
 impl Textures {
     /// The texture state glPushAttrib(GL_TEXTURE_BIT) saves.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::Textures;
+    /// let mut textures = Textures::default();
+    /// let saved = textures.attribs(); // glPushAttrib(GL_TEXTURE_BIT)
+    /// textures.unit_mut().env.lod_bias = 1.0;
+    /// textures.restore_attribs(saved); // glPopAttrib
+    /// assert_eq!(textures.unit().env.lod_bias, 0.0);
+    /// ```
     pub fn attribs(&self) -> TextureAttribs {
         let mut bound_params = Vec::new();
         for unit in &self.units {
@@ -645,6 +894,19 @@ impl Textures {
 
     /// glPopAttrib(GL_TEXTURE_BIT): restores `saved`. An object deleted since the push stays
     /// deleted: its bindings revert to 0 as glDeleteTextures made them (§3.8.12).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::{Target, Textures};
+    /// let mut textures = Textures::default();
+    /// textures.bind(Target::Texture2D, 4)?;
+    /// let saved = textures.attribs();
+    /// textures.delete(4);
+    /// textures.restore_attribs(saved);
+    /// assert_eq!(textures.unit().bindings[Target::Texture2D as usize], 0); // stays deleted
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn restore_attribs(&mut self, saved: TextureAttribs) {
         self.active_unit = saved.active_unit;
         self.units = saved.units;
@@ -666,12 +928,33 @@ impl Textures {
 
     /// Every unit's texture target and coordinate generation enables (GL_ENABLE_BIT saves
     /// all units').
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::Textures;
+    /// let mut textures = Textures::default();
+    /// textures.units[2].enabled[0] = true;
+    /// assert_eq!(textures.enables()[2].0, [true, false, false, false]);
+    /// ```
     pub fn enables(&self) -> [UnitEnables; MAX_TEXTURE_UNITS] {
         self.units
             .each_ref()
             .map(|unit| (unit.enabled, unit.tex_gen.coords.map(|c| c.enabled)))
     }
 
+    /// Restores every unit's enables as `enables` gave them.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::state::texture::Textures;
+    /// let mut textures = Textures::default();
+    /// let saved = textures.enables();
+    /// textures.units[0].tex_gen.coords[1].enabled = true;
+    /// textures.restore_enables(saved);
+    /// assert!(!textures.units[0].tex_gen.coords[1].enabled);
+    /// ```
     pub fn restore_enables(&mut self, enables: [UnitEnables; MAX_TEXTURE_UNITS]) {
         for (unit, (targets, generation)) in self.units.iter_mut().zip(enables) {
             unit.enabled = targets;

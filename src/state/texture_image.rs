@@ -13,12 +13,19 @@ use crate::state::pixel::{PixelMaps, PixelModeAttribs, PixelStoreModes};
 /// The base internal formats (table 3.15), and depth (§3.8.1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Base {
+    /// GL_ALPHA.
     Alpha,
+    /// GL_LUMINANCE.
     Luminance,
+    /// GL_LUMINANCE_ALPHA.
     LuminanceAlpha,
+    /// GL_INTENSITY.
     Intensity,
+    /// GL_RGB.
     Rgb,
+    /// GL_RGBA.
     Rgba,
+    /// GL_DEPTH_COMPONENT.
     Depth,
 }
 
@@ -30,6 +37,15 @@ pub type ComponentSizes = [u8; 7];
 /// formats of §3.8.1), or None if `internal_format` is none. Unsized formats (1-4, the base
 /// formats, the generic compressed ones, which fflight stores uncompressed) get 8 bits a
 /// component, depth 24.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::texture_image::{internal_format, Base}};
+/// assert_eq!(internal_format(GL_LUMINANCE_ALPHA as i32).map(|f| f.0), Some(Base::LuminanceAlpha));
+/// assert_eq!(internal_format(3).map(|f| f.0), Some(Base::Rgb)); // GL 1.0's component count
+/// assert!(internal_format(GL_LIGHT0 as i32).is_none());
+/// ```
 pub fn internal_format(internal_format: GLint) -> Option<(Base, ComponentSizes)> {
     use Base::*;
     let format = GLenum::try_from(internal_format).ok()?;
@@ -94,12 +110,19 @@ pub fn internal_format(internal_format: GLint) -> Option<(Base, ComponentSizes)>
 /// format as given, and its texels (none for a proxy), row by row, image by image.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TexImage {
+    /// GL_TEXTURE_WIDTH, the border included.
     pub width: i32,
+    /// GL_TEXTURE_HEIGHT, the border included.
     pub height: i32,
+    /// GL_TEXTURE_DEPTH, the border included.
     pub depth: i32,
+    /// GL_TEXTURE_BORDER.
     pub border: i32,
+    /// GL_TEXTURE_INTERNAL_FORMAT, as given.
     pub internal_format: GLint,
+    /// Its base internal format.
     pub base: Base,
+    /// The component resolutions it keeps (GL_TEXTURE_RED_SIZE ...).
     pub sizes: ComponentSizes,
     /// Shared: a glPushAttrib copy of a texture object must not copy its images.
     pub texels: Arc<Vec<[f32; 4]>>,
@@ -107,15 +130,56 @@ pub struct TexImage {
 
 impl TexImage {
     /// The number of texels.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture_image::{internal_format, TexImage}};
+    /// use std::sync::Arc;
+    /// let (base, sizes) = internal_format(GL_RGBA8 as i32).unwrap();
+    /// let image = TexImage {
+    ///     width: 4, height: 2, depth: 1, border: 0, internal_format: GL_RGBA8 as i32, base, sizes,
+    ///     texels: Arc::new(vec![[0.0; 4]; 8]),
+    /// };
+    /// assert_eq!(image.len(), 8);
+    /// assert_eq!(image.size(GL_TEXTURE_RED_SIZE), Some(8));
+    /// ```
     pub fn len(&self) -> usize {
         self.width as usize * self.height as usize * self.depth as usize
     }
 
+    /// Whether the image has no texel.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture_image::{internal_format, TexImage}};
+    /// use std::sync::Arc;
+    /// let (base, sizes) = internal_format(GL_RGB as i32).unwrap();
+    /// let image = TexImage {
+    ///     width: 0, height: 1, depth: 1, border: 0, internal_format: GL_RGB as i32, base, sizes,
+    ///     texels: Arc::new(Vec::new()),
+    /// };
+    /// assert!(image.is_empty());
+    /// ```
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
 
     /// The component resolution `pname` asks for (GL_TEXTURE_RED_SIZE ...), or None.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture_image::{internal_format, TexImage}};
+    /// use std::sync::Arc;
+    /// let (base, sizes) = internal_format(GL_R3_G3_B2 as i32).unwrap();
+    /// let image = TexImage {
+    ///     width: 1, height: 1, depth: 1, border: 0, internal_format: GL_R3_G3_B2 as i32, base, sizes,
+    ///     texels: Arc::new(vec![[0.0; 4]]),
+    /// };
+    /// assert_eq!((image.size(GL_TEXTURE_BLUE_SIZE), image.size(GL_TEXTURE_ALPHA_SIZE)), (Some(2), Some(0)));
+    /// ```
     pub fn size(&self, pname: GLenum) -> Option<u8> {
         let index = match pname {
             GL_TEXTURE_RED_SIZE => 0,
@@ -132,6 +196,15 @@ impl TexImage {
 
     /// The texel values of the base format after quantization to `sizes`, from an RGBA (or
     /// depth in R) color: table 3.15 keeps A for alpha, R for luminance and intensity.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture_image::{internal_format, TexImage}};
+    /// let (base, sizes) = internal_format(GL_RGB8 as i32).unwrap();
+    /// // 8 bits a component; RGB keeps no alpha (stored 0; `rgba` reads it back as 1).
+    /// assert_eq!(TexImage::store(base, &sizes, [1.0, 0.0, 1.0, 0.25]), [1.0, 0.0, 1.0, 0.0]);
+    /// ```
     pub fn store(base: Base, sizes: &ComponentSizes, rgba: [f32; 4]) -> [f32; 4] {
         let q = |v: f32, bits: u8| quantize(v, bits);
         let [r, g, b, a] = rgba;
@@ -152,6 +225,19 @@ impl TexImage {
     }
 
     /// A texel as the RGBA color glGetTexImage packs (table 6.1), depth in R.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture_image::{internal_format, TexImage}};
+    /// use std::sync::Arc;
+    /// let (base, sizes) = internal_format(GL_LUMINANCE8 as i32).unwrap();
+    /// let image = TexImage {
+    ///     width: 1, height: 1, depth: 1, border: 0, internal_format: GL_LUMINANCE8 as i32, base, sizes,
+    ///     texels: Arc::new(vec![[1.0, 0.0, 0.0, 1.0]]),
+    /// };
+    /// assert_eq!(image.rgba(image.texels[0])[0], 1.0);
+    /// ```
     pub fn rgba(&self, texel: [f32; 4]) -> [f32; 4] {
         let [r, g, b, a] = texel;
         match self.base {
@@ -177,6 +263,13 @@ fn quantize(v: f32, bits: u8) -> f32 {
 
 /// A client pixel format (table 3.6) that texture images take: its components in memory
 /// order as indices into RGBA (depth: 0).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::texture_image::format_components};
+/// assert_eq!(format_components(GL_BGR), Some(&[2, 1, 0][..]));
+/// ```
 pub fn format_components(format: GLenum) -> Option<&'static [usize]> {
     Some(match format {
         GL_RED | GL_LUMINANCE | GL_DEPTH_COMPONENT => &[0],
@@ -196,11 +289,24 @@ pub fn format_components(format: GLenum) -> Option<&'static [usize]> {
 /// its fields in component order, and whether the first component is in the low bits.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PixelType {
+    /// The type's enum.
     pub ty: GLenum,
+    /// Bytes per element (per component, or per pixel for the packed types).
     pub size: usize,
+    /// The packed types' field widths and whether they are reversed (_REV).
     pub packed: Option<(&'static [u32], bool)>,
 }
 
+/// The client type `ty`, or None for an unknown one.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::texture_image::pixel_type};
+/// let packed = pixel_type(GL_UNSIGNED_SHORT_5_6_5).unwrap();
+/// assert_eq!((packed.size, packed.packed), (2, Some((&[5, 6, 5][..], false))));
+/// assert!(pixel_type(GL_BITMAP).is_none());
+/// ```
 pub fn pixel_type(ty: GLenum) -> Option<PixelType> {
     let (size, packed): (usize, Option<(&'static [u32], bool)>) = match ty {
         GL_UNSIGNED_BYTE | GL_BYTE => (1, None),
@@ -229,14 +335,27 @@ pub fn pixel_type(ty: GLenum) -> Option<PixelType> {
 /// differs from the format's (table 3.8).
 #[derive(Clone, Copy, Debug)]
 pub struct PixelFormat {
+    /// The format's components in memory order, by RGBA index.
     pub components: &'static [usize],
+    /// The client type.
     pub ty: PixelType,
+    /// GL_DEPTH_COMPONENT.
     pub depth: bool,
     /// GL_LUMINANCE or GL_LUMINANCE_ALPHA: unpacking copies L to R, G and B.
     pub luminance: bool,
 }
 
 impl PixelFormat {
+    /// Checks `format` and `ty` as described above.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture_image::PixelFormat, GlError};
+    /// assert!(PixelFormat::new(GL_RGBA, GL_UNSIGNED_INT_8_8_8_8).is_ok());
+    /// // A packed type of three components for a four-component format.
+    /// assert_eq!(PixelFormat::new(GL_RGBA, GL_UNSIGNED_BYTE_3_3_2).err(), Some(GlError::InvalidOperation));
+    /// ```
     pub fn new(format: GLenum, ty: GLenum) -> GlResult<PixelFormat> {
         let components = format_components(format).ok_or(GlError::InvalidEnum)?;
         let ty = pixel_type(ty).ok_or(GlError::InvalidEnum)?;
@@ -256,6 +375,15 @@ impl PixelFormat {
     }
 
     /// Bytes of one pixel in memory.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::texture_image::PixelFormat};
+    /// assert_eq!(PixelFormat::new(GL_RGB, GL_SHORT)?.pixel_bytes(), 6);
+    /// assert_eq!(PixelFormat::new(GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4)?.pixel_bytes(), 2);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn pixel_bytes(&self) -> usize {
         match self.ty.packed {
             Some(_) => self.ty.size,
@@ -268,15 +396,31 @@ impl PixelFormat {
 /// store modes (§3.6.4, §3.8.1 for images of 3D textures, §4.3.2 for packing).
 #[derive(Clone, Copy, Debug)]
 pub struct Layout {
+    /// The offset of the first pixel (the skip modes applied).
     pub start: usize,
+    /// Bytes per pixel.
     pub pixel_bytes: usize,
+    /// Bytes from one row to the next (row length and alignment applied).
     pub row_stride: usize,
+    /// Bytes from one image to the next (image height applied).
     pub image_stride: usize,
+    /// Width, height, depth in pixels.
     pub size: [usize; 3],
 }
 
 impl Layout {
     /// `three_d`: the image-height and skip-images modes apply (images of 3D textures only).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::{pixel::PixelStoreModes, texture_image::{Layout, PixelFormat}}};
+    /// let format = PixelFormat::new(GL_RGB, GL_UNSIGNED_BYTE)?;
+    /// let modes = PixelStoreModes { skip_rows: 1, ..PixelStoreModes::default() };
+    /// let layout = Layout::new(&modes, &format, [3, 2, 1], false);
+    /// assert_eq!((layout.start, layout.row_stride), (12, 12)); // one row of 9 bytes padded to 12 skipped
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn new(
         modes: &PixelStoreModes,
         format: &PixelFormat,
@@ -322,6 +466,16 @@ impl Layout {
 
     /// The bytes from the start of client memory to the end of the last pixel (0 for an
     /// empty image).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::{pixel::PixelStoreModes, texture_image::{Layout, PixelFormat}}};
+    /// let format = PixelFormat::new(GL_RGB, GL_UNSIGNED_BYTE)?;
+    /// let layout = Layout::new(&PixelStoreModes::default(), &format, [3, 2, 1], false);
+    /// assert_eq!(layout.span(), 12 + 9);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn span(&self) -> usize {
         let [w, h, d] = self.size;
         if w == 0 || h == 0 || d == 0 {
@@ -438,6 +592,18 @@ fn float_to_component(ty: GLenum, v: f32) -> u32 {
 /// The pixel transfer operations of §3.6.5 on an unpacked color: scale and bias, then the
 /// R_TO_R ... A_TO_A maps if GL_MAP_COLOR, then the clamp to [0, 1]. Depth: its scale and
 /// bias, then the clamp.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::{pixel::{PixelMaps, PixelModeAttribs}, texture_image::transfer}};
+/// let mut mode = PixelModeAttribs::default();
+/// mode.set_transfer(GL_RED_SCALE, 2.0)?;
+/// mode.set_transfer(GL_GREEN_BIAS, 0.5)?;
+/// let out = transfer(&mode, &PixelMaps::default(), [0.25, 0.75, 0.0, 1.0], false);
+/// assert_eq!(out, [0.5, 1.0, 0.0, 1.0]); // scaled, biased, clamped
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn transfer(
     mode: &PixelModeAttribs,
     maps: &PixelMaps,
@@ -463,6 +629,18 @@ pub fn transfer(
 /// floats and expanded to RGBA (luminance copied to R, G and B; missing color components 0,
 /// alpha 1), then `per_pixel` (the transfer and the internal format's conversion).
 /// GL_INVALID_OPERATION when `bytes` is shorter than the layout's span.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::{pixel::PixelStoreModes, texture_image::{unpack, Layout, PixelFormat}}};
+/// let format = PixelFormat::new(GL_LUMINANCE, GL_UNSIGNED_BYTE)?;
+/// let modes = PixelStoreModes::default();
+/// let layout = Layout::new(&modes, &format, [2, 1, 1], false);
+/// let pixels = unpack(&[255, 0], &modes, &format, &layout, |rgba| rgba)?;
+/// assert_eq!(pixels, [[1.0, 1.0, 1.0, 1.0], [0.0, 0.0, 0.0, 1.0]]); // L copied to R, G, B
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn unpack(
     bytes: &[u8],
     modes: &PixelStoreModes,
@@ -513,6 +691,19 @@ pub fn unpack(
 /// Packs `w x h x d` RGBA colors (depth in R) into `bytes` (§4.3.2 as §6.1.4 uses it: no
 /// pixel transfer; luminance is R): the bytes between pixels are left as they are.
 /// GL_INVALID_OPERATION when `bytes` is shorter than the layout's span.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::{pixel::PixelStoreModes, texture_image::{pack, Layout, PixelFormat}}};
+/// let format = PixelFormat::new(GL_RGBA, GL_UNSIGNED_BYTE)?;
+/// let modes = PixelStoreModes::default();
+/// let layout = Layout::new(&modes, &format, [1, 1, 1], false);
+/// let mut bytes = [0u8; 4];
+/// pack(&[[1.0, 0.0, 0.5, 1.0]], &mut bytes, &modes, &format, &layout)?;
+/// assert_eq!(bytes, [255, 0, 128, 255]);
+/// # Ok::<(), fflight::GlError>(())
+/// ```
 pub fn pack(
     colors: &[[f32; 4]],
     bytes: &mut [u8],
