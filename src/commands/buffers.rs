@@ -172,10 +172,13 @@ pub(crate) fn with_stores<'a>(
 
 impl Context {
     /// glGenQueries.
-    pub fn gen_queries(&mut self, count: i32) -> GlResult<Vec<GLuint>> {
+    pub fn gen_queries(&mut self, count: i32, names: &mut [GLuint]) -> GlResult {
         self.outside_begin_end()?;
         let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
-        Ok(self.queries.generate(count))
+        // Checked before any name is made: a NULL destination (an empty slice) changes nothing.
+        let names = names.get_mut(..count).ok_or(GlError::InvalidValue)?;
+        names.copy_from_slice(&self.queries.generate(count));
+        Ok(())
     }
 
     /// glDeleteQueries: `ids` holds `count` names (fewer: a NULL pointer).

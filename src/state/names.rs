@@ -3,15 +3,36 @@
 use std::collections::BTreeSet;
 
 /// `count` names that neither an object (`in_use`) nor an earlier glGen* (`reserved`) holds,
-/// counting up from the largest name in use, as Mesa does; they join `reserved` until bound.
+/// counting up from the largest name in use, as Mesa does, and on from 1 when that reaches
+/// the last name (an application may bind 0xFFFFFFFF); they join `reserved` until bound.
 pub fn generate(
     in_use: impl Iterator<Item = u32>,
     reserved: &mut BTreeSet<u32>,
     count: usize,
 ) -> Vec<u32> {
-    let largest = in_use.chain(reserved.iter().copied()).max();
-    let first = largest.unwrap_or(0).saturating_add(1);
-    let names: Vec<u32> = (first..=u32::MAX).take(count).collect();
+    let used: BTreeSet<u32> = in_use.chain(reserved.iter().copied()).collect();
+    let first = used.last().map_or(1, |&largest| largest.wrapping_add(1).max(1));
+    let names: Vec<u32> = (first..=u32::MAX)
+        .chain(1..first)
+        .filter(|name| !used.contains(name))
+        .take(count)
+        .collect();
     reserved.extend(&names);
     names
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_after_the_last_one_start_again_from_1() {
+        // Found by the entry-point sweep: glBindTexture(target, 0xFFFFFFFF) then glGenTextures
+        // gave one name (the one in use) for any count.
+        let mut reserved = BTreeSet::new();
+        let names = generate([u32::MAX, 2].into_iter(), &mut reserved, 3);
+        assert_eq!(names, vec![1, 3, 4]);
+        assert_eq!(generate([u32::MAX].into_iter(), &mut reserved, 1), vec![2]);
+        assert_eq!(generate([7].into_iter(), &mut BTreeSet::new(), 2), vec![8, 9]);
+    }
 }
