@@ -8,7 +8,8 @@ CFLAGS_STRICT := -std=c99 -Wall -Wextra -Werror -pedantic
 LIB := target/debug/libfflight.a
 DEMO_DIR := target/demo
 
-.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind
+.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind \
+	test-sweep-sanitize test-valgrind-rust
 
 all: build
 
@@ -36,7 +37,9 @@ test: build
 	$(MAKE) lint
 	$(MAKE) --no-print-directory test-install
 	$(MAKE) --no-print-directory test-sanitize
+	$(MAKE) --no-print-directory test-sweep-sanitize
 	$(MAKE) --no-print-directory test-valgrind
+	$(MAKE) --no-print-directory test-valgrind-rust
 
 demo: build
 	@mkdir -p $(DEMO_DIR)
@@ -156,3 +159,21 @@ test-valgrind:
 		'valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite {} \
 		> /dev/null 2> {}.valgrind; if [ $$? = 99 ]; then echo "valgrind: {}"; cat {}.valgrind; exit 255; fi'
 	@echo "test-valgrind: $$(ls target/c_tests/*.fflight | wc -l) programs under memcheck, no error, no definite leak"
+
+# ---- the entry-point sweep under ASan and UBSan (tests/sweep.rs, run by `cargo test`, writes
+# its generated header target/sweep/sweep_functions.h and runs the plain build) ----
+SWEEP_DIR := target/sweep
+test-sweep-sanitize: build
+	@ls $(SWEEP_DIR)/sweep_functions.h > /dev/null
+	@$(CC) $(SANITIZE_FLAGS) -D_DEFAULT_SOURCE -Iinclude -I$(SWEEP_DIR) tests/sweep/sweep.c $(LIB) \
+		-lm -lpthread -ldl -o $(SWEEP_DIR)/sweep_asan
+	@SWEEP_SECONDS=10 ASAN_OPTIONS=detect_leaks=1 $(SWEEP_DIR)/sweep_asan > $(SWEEP_DIR)/sweep_asan.txt \
+		2> $(SWEEP_DIR)/sweep_asan.err || { cat $(SWEEP_DIR)/sweep_asan.txt $(SWEEP_DIR)/sweep_asan.err; exit 1; }
+	@if grep -q 'ERROR: AddressSanitizer\|ERROR: LeakSanitizer\|runtime error' $(SWEEP_DIR)/sweep_asan.err; then \
+		cat $(SWEEP_DIR)/sweep_asan.err; exit 1; fi
+	@echo "test-sweep-sanitize: $$(tail -n 1 $(SWEEP_DIR)/sweep_asan.txt) under ASan and UBSan"
+
+# ---- the Rust test binaries and the sweep under valgrind memcheck (see the script for which
+# binaries and why) ----
+test-valgrind-rust:
+	@tools/valgrind_rust_tests.sh

@@ -963,6 +963,8 @@ c_programs!(
     legacy_redbook_scene,
     legacy_bezier_patches,
     thread_exit_context,
+    thread_stress,
+    limits_misuse,
     dlist_call_lists,
     dlist_arrays,
     dlist_errors,

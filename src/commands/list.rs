@@ -28,7 +28,7 @@ pub const MAX_LIST_NESTING: usize = 64;
 
 /// The most names one glGenLists reserves (a larger range returns 0, as when no block of
 /// unused names is left).
-pub const MAX_LIST_RANGE: u32 = 1 << 20;
+const MAX_LIST_RANGE: u32 = 1 << 20;
 
 /// One command of a display list.
 #[derive(Clone, Debug, PartialEq)]

@@ -10,13 +10,20 @@ pub fn generate(
     reserved: &mut BTreeSet<u32>,
     count: usize,
 ) -> Vec<u32> {
-    let used: BTreeSet<u32> = in_use.chain(reserved.iter().copied()).collect();
-    let first = used.last().map_or(1, |&largest| largest.wrapping_add(1).max(1));
-    let names: Vec<u32> = (first..=u32::MAX)
-        .chain(1..first)
-        .filter(|name| !used.contains(name))
-        .take(count)
-        .collect();
+    let in_use: Vec<u32> = in_use.collect();
+    let largest = in_use.iter().chain(reserved.iter()).copied().max().unwrap_or(0);
+    let names: Vec<u32> = if (u32::MAX - largest) as usize >= count {
+        // Every name above the largest is free.
+        (largest + 1..).take(count).collect()
+    } else {
+        let used: BTreeSet<u32> = in_use.into_iter().chain(reserved.iter().copied()).collect();
+        let first = largest.wrapping_add(1).max(1);
+        (first..=u32::MAX)
+            .chain(1..first)
+            .filter(|name| !used.contains(name))
+            .take(count)
+            .collect()
+    };
     reserved.extend(&names);
     names
 }

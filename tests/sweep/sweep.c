@@ -31,7 +31,7 @@
  * glBegin/glEnd, compiling a GL_COMPILE list, then calling the list, and
  * GL_COMPILE_AND_EXECUTE), then random functions in random order with random arguments
  * without any reset for SWEEP_SECONDS (or SWEEP_CALLS calls). The seed is fixed
- * (SWEEP_SEED). A call running longer than 10 s fails with its arguments printed. */
+ * (SWEEP_SEED). A call running longer than SWEEP_CALL_SECONDS (10) fails, its arguments printed. */
 #include "fflight.h"
 
 #include <float.h>
@@ -102,6 +102,7 @@ static int current_fn = -1;
 static union sweep_arg current_args[MAX_PARAMS];
 static const char *current_situation = "";
 static long long calls_made;
+static unsigned call_seconds = 10; /* SWEEP_CALL_SECONDS: longer under valgrind */
 
 static void print_call(FILE *out)
 {
@@ -143,7 +144,7 @@ static void fail(const char *rule, const char *what)
 static void on_signal(int sig)
 {
     /* Not async-signal-safe, but the process is ending anyway and the message matters. */
-    printf("FATAL signal %d (%s)\n", sig, sig == SIGALRM ? "the call ran longer than 10 s"
+    printf("FATAL signal %d (%s)\n", sig, sig == SIGALRM ? "the call ran longer than SWEEP_CALL_SECONDS"
                                                         : "crash");
     print_call(stdout);
     fflush(stdout);
@@ -1221,7 +1222,7 @@ static GLenum make_call(int fn, enum situation situation)
     memcpy(current_args, a, sizeof a);
     current_situation = SITUATION_NAMES[situation];
     ret.p = NULL;
-    alarm(10);
+    alarm(call_seconds);
     f->call(a, &ret);
     alarm(0);
     calls_made++;
@@ -1310,6 +1311,7 @@ int main(void)
     size_t i;
     double start;
     rng_state = (unsigned long long)env_long("SWEEP_SEED", 9);
+    call_seconds = (unsigned)env_long("SWEEP_CALL_SECONDS", 10);
     signal(SIGALRM, on_signal);
     signal(SIGSEGV, on_signal);
     signal(SIGBUS, on_signal);
