@@ -18,8 +18,10 @@
 #include "ffl_test.h"
 
 #define THREADS 16
-#define ITERATIONS 6
-#define ARRAY_VERTICES 3000 /* above the threaded-draw threshold */
+#define ITERATIONS 4
+#define ARRAY_VERTICES 33000 /* above the threaded-draw threshold (2 x 16K) */
+#define SMALL_DRAW 500
+#define BIG_DRAWERS 2 /* threads whose first draw is the threaded one (memcheck's time) */
 #define POOL 4
 #define CYCLES 150
 
@@ -43,9 +45,9 @@ static float unit(unsigned *state) { return (float)(next(state) % 1000) / 1000.0
 static GLfloat positions[ARRAY_VERTICES][3], normals[ARRAY_VERTICES][3];
 
 /* One thread's work on the current context: every value read goes into the hash. */
-static unsigned long long work(unsigned seed)
+static unsigned long long work(unsigned seed, int big)
 {
-    static const GLsizei FEEDBACK = 4 * ARRAY_VERTICES * 12;
+    static const GLsizei FEEDBACK = 8 * ARRAY_VERTICES + 4096; /* GL_3D_COLOR points: 8 values */
     GLfloat *feedback = malloc(sizeof(GLfloat) * (size_t)FEEDBACK);
     GLuint select[256];
     unsigned long long h = 14695981039346656037ull;
@@ -88,7 +90,7 @@ static unsigned long long work(unsigned seed)
             glVertex3f(unit(&state) - 0.5f, unit(&state) - 0.5f, unit(&state) - 0.5f);
         }
         glEnd();
-        glDrawArrays(GL_POINTS, 0, ARRAY_VERTICES);
+        glDrawArrays(GL_POINTS, 0, big && it == 0 ? ARRAY_VERTICES : SMALL_DRAW);
         n = glRenderMode(GL_RENDER);
         h = hash_bytes(h, &n, sizeof n);
         if (n > 0)
@@ -128,6 +130,7 @@ static unsigned long long work(unsigned seed)
 /* ---- 16 contexts drawing at once ---- */
 struct job {
     unsigned seed;
+    int big;
     unsigned long long result;
     int ok;
 };
@@ -137,7 +140,7 @@ static void *drawing_thread(void *arg)
     struct job *job = arg;
     FflContext *context = fflCreateContext();
     job->ok = fflMakeCurrent(context) == GL_TRUE;
-    job->result = work(job->seed);
+    job->result = work(job->seed, job->big);
     job->ok &= fflMakeCurrent(NULL) == GL_TRUE;
     job->ok &= fflDestroyContext(context) == GL_TRUE;
     return NULL;
@@ -256,8 +259,9 @@ int main(void)
     for (k = 0; k < THREADS; k++) {
         FflContext *c = fflCreateContext();
         jobs[k].seed = (unsigned)k * 2654435761u + 1u;
+        jobs[k].big = k < BIG_DRAWERS;
         fflMakeCurrent(c);
-        jobs[k].result = work(jobs[k].seed);
+        jobs[k].result = work(jobs[k].seed, jobs[k].big);
         fflMakeCurrent(NULL);
         fflDestroyContext(c);
     }
@@ -265,6 +269,7 @@ int main(void)
         struct job concurrent[THREADS];
         for (k = 0; k < THREADS; k++) {
             concurrent[k].seed = jobs[k].seed;
+            concurrent[k].big = jobs[k].big;
             if (pthread_create(&threads[k], NULL, drawing_thread, &concurrent[k]) != 0)
                 return 1;
         }

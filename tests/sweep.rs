@@ -221,7 +221,9 @@ fn generate(protos: &[Prototype], enums: &[(String, u64)]) -> String {
         }
         out.push_str("}\n");
     }
-    out.push_str("\nstatic const struct sweep_function SWEEP_FUNCTIONS[SWEEP_FUNCTION_COUNT] = {\n");
+    out.push_str(
+        "\nstatic const struct sweep_function SWEEP_FUNCTIONS[SWEEP_FUNCTION_COUNT] = {\n",
+    );
     for p in protos {
         write!(
             out,
@@ -238,8 +240,7 @@ fn generate(protos: &[Prototype], enums: &[(String, u64)]) -> String {
         .unwrap();
         for param in &p.params {
             let k = kind(&param.ty);
-            let (size, constant) = if k.starts_with("SWEEP_POINTER") && k != "SWEEP_POINTER_SIZED"
-            {
+            let (size, constant) = if k.starts_with("SWEEP_POINTER") && k != "SWEEP_POINTER_SIZED" {
                 (
                     format!("sizeof({})", pointee(&param.ty)),
                     param.ty.starts_with("const"),
@@ -363,7 +364,10 @@ fn the_header_parses_into_every_exported_function() {
     // Every GL 1.5 function and every fflight one the docs list is among the prototypes.
     for list in ["docs/gl15-functions.txt", "docs/fflight-functions.txt"] {
         let text = std::fs::read_to_string(manifest_dir().join(list)).unwrap();
-        for name in text.lines().filter(|l| !l.starts_with('#') && !l.is_empty()) {
+        for name in text
+            .lines()
+            .filter(|l| !l.starts_with('#') && !l.is_empty())
+        {
             assert!(
                 names.contains(name.trim()) || list.contains("gl15") && !header.contains(name),
                 "{name} ({list}) is not among the parsed prototypes"
@@ -412,7 +416,10 @@ fn every_entry_point_survives_hostile_arguments() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     let stderr = String::from_utf8_lossy(&out.stderr);
     println!("{stdout}");
-    assert!(status.success(), "the sweep failed ({status}):\n{stdout}\n{stderr}");
+    assert!(
+        status.success(),
+        "the sweep failed ({status}):\n{stdout}\n{stderr}"
+    );
     // The program's own count of the functions it called, in every situation.
     let called = stdout
         .lines()
@@ -420,5 +427,9 @@ fn every_entry_point_survives_hostile_arguments() {
         .and_then(|l| l.split_whitespace().next())
         .and_then(|n| n.parse::<usize>().ok())
         .expect("the sweep reports how many functions it called");
-    assert_eq!(called, protos.len(), "not every declared function was called");
+    assert_eq!(
+        called,
+        protos.len(),
+        "not every declared function was called"
+    );
 }

@@ -5,9 +5,9 @@ use std::ffi::c_void;
 
 use super::{read, read_mut, with_context};
 use crate::commands::list::{Command, ImageCommand};
+use crate::commands::texture::{SubImageArgs, TexImageArgs};
 use crate::context::Context;
 use crate::error::GlResult;
-use crate::commands::texture::{SubImageArgs, TexImageArgs};
 use crate::gl::*;
 
 /// The compressed image commands always fail (no compressed format); while a list is

@@ -11,7 +11,12 @@ pub fn generate(
     count: usize,
 ) -> Vec<u32> {
     let in_use: Vec<u32> = in_use.collect();
-    let largest = in_use.iter().chain(reserved.iter()).copied().max().unwrap_or(0);
+    let largest = in_use
+        .iter()
+        .chain(reserved.iter())
+        .copied()
+        .max()
+        .unwrap_or(0);
     let names: Vec<u32> = if (u32::MAX - largest) as usize >= count {
         // Every name above the largest is free.
         (largest + 1..).take(count).collect()
@@ -40,6 +45,9 @@ mod tests {
         let names = generate([u32::MAX, 2].into_iter(), &mut reserved, 3);
         assert_eq!(names, vec![1, 3, 4]);
         assert_eq!(generate([u32::MAX].into_iter(), &mut reserved, 1), vec![2]);
-        assert_eq!(generate([7].into_iter(), &mut BTreeSet::new(), 2), vec![8, 9]);
+        assert_eq!(
+            generate([7].into_iter(), &mut BTreeSet::new(), 2),
+            vec![8, 9]
+        );
     }
 }

@@ -1305,7 +1305,7 @@ int main(void)
 {
     long rounds = env_long("SWEEP_ROUNDS", 12);
     double seconds = (double)env_long("SWEEP_SECONDS", 20);
-    long max_calls = env_long("SWEEP_CALLS", 2000000);
+    long max_calls = env_long("SWEEP_CALLS", 100000);
     int fn, covered = 0, s;
     long r;
     size_t i;
@@ -1370,6 +1370,26 @@ int main(void)
            "stack %lld, GL_OUT_OF_MEMORY %lld, GL_TABLE_TOO_LARGE %lld\n",
            errors_seen[0], errors_seen[1], errors_seen[2], errors_seen[3], errors_seen[4],
            errors_seen[5], errors_seen[6]);
+    {
+        int forbidden = 0, client = 0, compiled = 0, pointers = 0;
+        union sweep_arg zero[MAX_PARAMS];
+        memset(zero, 0, sizeof zero);
+        for (fn = 0; fn < SWEEP_FUNCTION_COUNT; fn++) {
+            const char *name = SWEEP_FUNCTIONS[fn].name;
+            int k;
+            if (client_state_command(name))
+                client++;
+            else if (!allowed_in_begin_end(name) && !outside_gl_rules(name))
+                forbidden++;
+            if (!executed_immediately(name, zero))
+                compiled++;
+            for (k = 0; k < SWEEP_FUNCTIONS[fn].count; k++)
+                pointers += SWEEP_FUNCTIONS[fn].params[k].kind >= SWEEP_POINTER;
+        }
+        printf("rules: R3 (GL_INVALID_OPERATION between glBegin/glEnd) for %d functions, %d client-state "
+               "ones free; R5 (no error while compiled) for %d; %d pointer parameters guarded\n",
+               forbidden, client, compiled, pointers);
+    }
     printf("functions called: %d of %d in every situation\n", covered, SWEEP_FUNCTION_COUNT);
     while (context_count)
         fflDestroyContext(contexts[--context_count]);
