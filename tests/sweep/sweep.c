@@ -1191,6 +1191,50 @@ static void check_string(const GLubyte *s)
         fail("R6", "glGetString's string is not terminated within 100000 bytes");
 }
 
+/* How many elements of `size` bytes a call wrote at `data` (the last one not all canary). */
+static int written_elements(const unsigned char *data, int capacity, size_t size)
+{
+    int n;
+    size_t b;
+    for (n = capacity; n > 0; n--)
+        for (b = 0; b < size; b++)
+            if (data[(size_t)(n - 1) * size + b] != CANARY)
+                return n;
+    return 0;
+}
+
+/* R2 for the glGet*v family, where the size rule allows 16 values for every pname: the five
+ * forms must write the same number of values for the same pname (a pname whose count one
+ * form got wrong shows), each into a buffer of 16 against the guard page. */
+static long long get_forms_compared;
+static void check_get_forms(GLenum pname)
+{
+    int counts[5], k;
+    char what[160];
+    for (k = 0; k < 5; k++) {
+        static const size_t sizes[5] = { sizeof(GLboolean), sizeof(GLint), sizeof(GLfloat),
+                                         sizeof(GLdouble), sizeof(GLfixed) };
+        unsigned char *p = slot_buffer(MAX_PARAMS, 16 * sizes[k], sizes[k], 1, 0);
+        switch (k) {
+        case 0: glGetBooleanv(pname, (GLboolean *)(void *)p); break;
+        case 1: glGetIntegerv(pname, (GLint *)(void *)p); break;
+        case 2: glGetFloatv(pname, (GLfloat *)(void *)p); break;
+        case 3: glGetDoublev(pname, (GLdouble *)(void *)p); break;
+        default: glGetFixedv(pname, (GLfixed *)(void *)p); break;
+        }
+        counts[k] = glGetError() == GL_NO_ERROR ? written_elements(p, 16, sizes[k]) : -1;
+    }
+    get_forms_compared += counts[0] >= 0;
+    for (k = 1; k < 5; k++)
+        if (counts[k] != counts[0]) {
+            snprintf(what, sizeof what,
+                     "pname 0x%x: glGetBooleanv wrote %d values, Integerv %d, Floatv %d, Doublev %d, "
+                     "Fixedv %d", pname, counts[0], counts[1], counts[2], counts[3], counts[4]);
+            fail("R2", what);
+            return;
+        }
+}
+
 /* Makes the call in `situation`, checks the rules; returns the error it raised. */
 static GLenum make_call(int fn, enum situation situation)
 {
@@ -1269,6 +1313,10 @@ static GLenum make_call(int fn, enum situation situation)
         snprintf(what, sizeof what, "0x%x while compiling a command §5.4 compiles", error);
         fail("R5", what);
     }
+    if ((situation == OUTSIDE || situation == RANDOM) && error == GL_NO_ERROR &&
+        (same(f->name, "glGetBooleanv") || same(f->name, "glGetIntegerv") ||
+         same(f->name, "glGetFloatv") || same(f->name, "glGetDoublev") || same(f->name, "glGetFixedv")))
+        check_get_forms((GLenum)a[0].i);
     if (same(f->name, "glGetString"))
         check_string(ret.p);
     if (same(f->name, "fflCreateContext"))
@@ -1334,6 +1382,10 @@ int main(void)
         return 1;
     }
 
+    /* Every enum of the header as a glGet pname, through the five forms. */
+    for (i = 0; i < SWEEP_ENUM_COUNT; i++)
+        check_get_forms(SWEEP_ENUMS[i]);
+
     /* Every function, every situation, `rounds` argument draws each. */
     start = now();
     for (fn = 0; fn < SWEEP_FUNCTION_COUNT; fn++)
@@ -1387,8 +1439,9 @@ int main(void)
                 pointers += SWEEP_FUNCTIONS[fn].params[k].kind >= SWEEP_POINTER;
         }
         printf("rules: R3 (GL_INVALID_OPERATION between glBegin/glEnd) for %d functions, %d client-state "
-               "ones free; R5 (no error while compiled) for %d; %d pointer parameters guarded\n",
-               forbidden, client, compiled, pointers);
+               "ones free; R5 (no error while compiled) for %d; %d pointer parameters guarded; "
+               "the five glGet*v forms agree on %lld successful queries (every pname of the header)\n",
+               forbidden, client, compiled, pointers, get_forms_compared);
     }
     printf("functions called: %d of %d in every situation\n", covered, SWEEP_FUNCTION_COUNT);
     while (context_count)
