@@ -169,7 +169,7 @@ test-sweep-sanitize: build
 		-lm -lpthread -ldl -o $(SWEEP_DIR)/sweep_asan
 	@SWEEP_SECONDS=10 ASAN_OPTIONS=detect_leaks=1 $(SWEEP_DIR)/sweep_asan > $(SWEEP_DIR)/sweep_asan.txt \
 		2> $(SWEEP_DIR)/sweep_asan.err || { cat $(SWEEP_DIR)/sweep_asan.txt $(SWEEP_DIR)/sweep_asan.err; exit 1; }
-	@if grep -q 'ERROR: AddressSanitizer\|ERROR: LeakSanitizer\|runtime error' $(SWEEP_DIR)/sweep_asan.err; then \
+	@if grep -q 'ERROR: AddressSanitizer\|ERROR: LeakSanitizer\|runtime error\|panicked at' $(SWEEP_DIR)/sweep_asan.err; then \
 		cat $(SWEEP_DIR)/sweep_asan.err; exit 1; fi
 	@echo "test-sweep-sanitize: $$(grep '^calls:' $(SWEEP_DIR)/sweep_asan.txt | cut -d';' -f1) under ASan and UBSan, no report"
 

@@ -420,6 +420,12 @@ fn every_entry_point_survives_hostile_arguments() {
         status.success(),
         "the sweep failed ({status}):\n{stdout}\n{stderr}"
     );
+    // A panic inside fflight is caught at the C boundary (the call returns, nothing crashes)
+    // but is a bug all the same: Rust prints it on stderr.
+    assert!(
+        !stderr.contains("panicked at"),
+        "a call panicked inside fflight:\n{stderr}"
+    );
     // The program's own count of the functions it called, in every situation.
     let called = stdout
         .lines()

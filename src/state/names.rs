@@ -10,6 +10,9 @@ pub fn generate(
     reserved: &mut BTreeSet<u32>,
     count: usize,
 ) -> Vec<u32> {
+    if count == 0 {
+        return Vec::new();
+    }
     let in_use: Vec<u32> = in_use.collect();
     let largest = in_use
         .iter()
@@ -18,8 +21,9 @@ pub fn generate(
         .max()
         .unwrap_or(0);
     let names: Vec<u32> = if (u32::MAX - largest) as usize >= count {
-        // Every name above the largest is free.
-        (largest + 1..).take(count).collect()
+        // Every name above the largest is free (an inclusive range: `largest + 1..` would
+        // step past u32::MAX after yielding it).
+        (largest + 1..=largest + count as u32).collect()
     } else {
         let used: BTreeSet<u32> = in_use.into_iter().chain(reserved.iter().copied()).collect();
         let first = largest.wrapping_add(1).max(1);
