@@ -135,3 +135,64 @@ fn compressed_images_are_compiled_and_fail_when_the_list_runs() {
     glCallList(list);
     assert_eq!(glGetError(), GL_INVALID_ENUM);
 }
+
+unsafe extern "C" {
+    fn glConvolutionFilter2D(
+        target: GLenum,
+        internalformat: GLenum,
+        width: GLsizei,
+        height: GLsizei,
+        format: GLenum,
+        ty: GLenum,
+        image: *const std::ffi::c_void,
+    );
+    fn glTexImage2D(
+        target: GLenum,
+        level: GLint,
+        internalformat: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        border: GLint,
+        format: GLenum,
+        ty: GLenum,
+        pixels: *const std::ffi::c_void,
+    );
+    safe fn glPixelStorei(pname: GLenum, param: GLint);
+}
+
+#[test]
+fn images_of_hostile_sizes_are_refused_not_overflowed() {
+    let _context = fresh();
+    let pixels = [0u8; 64];
+    // The bytes these would read overflowed usize (2^31 rows of 2^31 float pixels, skipped
+    // rows on top): a panic inside fflight, no error recorded.
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, i32::MAX);
+    // SAFETY: the sizes are refused before anything is read.
+    unsafe {
+        glConvolutionFilter2D(
+            GL_CONVOLUTION_2D,
+            GL_RGBA,
+            i32::MAX,
+            i32::MAX,
+            GL_RGBA,
+            GL_FLOAT,
+            pixels.as_ptr().cast(),
+        );
+    }
+    assert_eq!(glGetError(), GL_INVALID_VALUE);
+    // SAFETY: as above.
+    unsafe {
+        glTexImage2D(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA as GLint,
+            i32::MAX,
+            i32::MAX,
+            0,
+            GL_RGBA,
+            GL_FLOAT,
+            pixels.as_ptr().cast(),
+        );
+    }
+    assert_eq!(glGetError(), GL_INVALID_VALUE);
+}
