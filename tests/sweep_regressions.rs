@@ -167,18 +167,19 @@ fn images_of_hostile_sizes_are_refused_not_overflowed() {
     // The bytes these would read overflowed usize (2^31 rows of 2^31 float pixels, skipped
     // rows on top): a panic inside fflight, no error recorded.
     glPixelStorei(GL_UNPACK_SKIP_ROWS, i32::MAX);
+    let (huge, data) = (i32::MAX, pixels.as_ptr().cast());
     // SAFETY: the sizes are refused before anything is read.
     unsafe {
         glConvolutionFilter2D(
             GL_CONVOLUTION_2D,
             GL_RGBA,
-            i32::MAX,
-            i32::MAX,
+            huge,
+            huge,
             GL_RGBA,
             GL_FLOAT,
-            pixels.as_ptr().cast(),
-        );
-    }
+            data,
+        )
+    };
     assert_eq!(glGetError(), GL_INVALID_VALUE);
     // SAFETY: as above.
     unsafe {
@@ -186,13 +187,13 @@ fn images_of_hostile_sizes_are_refused_not_overflowed() {
             GL_TEXTURE_2D,
             0,
             GL_RGBA as GLint,
-            i32::MAX,
-            i32::MAX,
+            huge,
+            huge,
             0,
             GL_RGBA,
             GL_FLOAT,
-            pixels.as_ptr().cast(),
-        );
-    }
+            data,
+        )
+    };
     assert_eq!(glGetError(), GL_INVALID_VALUE);
 }
