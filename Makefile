@@ -10,7 +10,8 @@ CFLAGS_STRICT := -std=c99 -Wall -Wextra -Werror -pedantic
 LIB := target/debug/libfflight.a
 DEMO_DIR := target/demo
 
-.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind test-window prefixed test-cinstall
+.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind \
+	test-window prefixed test-cinstall test-sweep-sanitize test-valgrind-rust
 
 all: build
 
@@ -40,7 +41,9 @@ test: build
 	$(MAKE) lint
 	$(MAKE) --no-print-directory test-install
 	$(MAKE) --no-print-directory test-sanitize
+	$(MAKE) --no-print-directory test-sweep-sanitize
 	$(MAKE) --no-print-directory test-valgrind
+	$(MAKE) --no-print-directory test-valgrind-rust
 
 # The demo scene (examples/demo/scene.c: a lit sphere on a lit floor, three lights) through
 # fflight and through OSMesa, fed back and compared: a short summary, the raw rows in
@@ -215,3 +218,20 @@ test-window: deps
 	$(CARGO) build --example modern_window
 	LIBGL_ALWAYS_SOFTWARE=1 tools/with-display.sh \
 		timeout 120 target/debug/examples/modern_window $(WINDOW_DIR)/fflight-vs-gl.png
+# ---- the entry-point sweep under ASan and UBSan (tests/sweep.rs, run by `cargo test`, writes
+# its generated header target/sweep/sweep_functions.h and runs the plain build) ----
+SWEEP_DIR := target/sweep
+test-sweep-sanitize: build
+	@ls $(SWEEP_DIR)/sweep_functions.h > /dev/null
+	@$(CC) $(SANITIZE_FLAGS) -D_DEFAULT_SOURCE -Iinclude -I$(SWEEP_DIR) tests/sweep/sweep.c $(LIB) \
+		-lm -lpthread -ldl -o $(SWEEP_DIR)/sweep_asan
+	@SWEEP_SECONDS=10 ASAN_OPTIONS=detect_leaks=1 $(SWEEP_DIR)/sweep_asan > $(SWEEP_DIR)/sweep_asan.txt \
+		2> $(SWEEP_DIR)/sweep_asan.err || { cat $(SWEEP_DIR)/sweep_asan.txt $(SWEEP_DIR)/sweep_asan.err; exit 1; }
+	@if grep -q 'ERROR: AddressSanitizer\|ERROR: LeakSanitizer\|runtime error\|panicked at' $(SWEEP_DIR)/sweep_asan.err; then \
+		cat $(SWEEP_DIR)/sweep_asan.err; exit 1; fi
+	@echo "test-sweep-sanitize: $$(grep '^calls:' $(SWEEP_DIR)/sweep_asan.txt | cut -d';' -f1) under ASan and UBSan, no report"
+
+# ---- the Rust test binaries and the sweep under valgrind memcheck (see the script for which
+# binaries and why) ----
+test-valgrind-rust:
+	@tools/valgrind_rust_tests.sh

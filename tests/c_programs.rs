@@ -967,6 +967,8 @@ c_programs!(
     legacy_multitexture_quad,
     legacy_nurbs_surface,
     thread_exit_context,
+    thread_stress,
+    limits_misuse,
     dlist_call_lists,
     dlist_arrays,
     dlist_errors,

@@ -288,6 +288,7 @@ mod c_abi {
     unsafe extern "C" {
         safe fn fflCreateContext() -> *mut std::ffi::c_void;
         fn fflMakeCurrent(context: *mut std::ffi::c_void) -> GLboolean;
+        fn fflDestroyContext(context: *mut std::ffi::c_void) -> GLboolean;
         fn glSelectBuffer(size: GLsizei, buffer: *mut GLuint);
         safe fn glRenderMode(mode: GLenum) -> GLint;
         safe fn glPushName(name: GLuint);
@@ -300,8 +301,9 @@ mod c_abi {
 
     #[test]
     fn records_are_written_to_the_select_buffer_and_not_past_it() {
+        let context = fflCreateContext();
         // SAFETY: a fresh context for this test's thread.
-        assert_eq!(unsafe { fflMakeCurrent(fflCreateContext()) }, GL_TRUE);
+        assert_eq!(unsafe { fflMakeCurrent(context) }, GL_TRUE);
         glViewport(0, 0, 100, 100);
         const SENTINEL: GLuint = 0xDEAD_BEEF;
         let mut buffer = [SENTINEL; 8];
@@ -322,5 +324,8 @@ mod c_abi {
             assert_eq!(buffer[..written], record[..written]);
             assert!(buffer[written..].iter().all(|&v| v == SENTINEL));
         }
+        // Destroyed (released first), or memcheck reports it lost (make test-valgrind-rust).
+        // SAFETY: the context created above, used no more.
+        assert_eq!(unsafe { fflDestroyContext(context) }, GL_TRUE);
     }
 }

@@ -22,6 +22,11 @@ unsafe fn bytes<'a>(data: *const c_void, size: GLsizeiptr) -> &'a [u8] {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn glGenBuffers(n: GLsizei, buffers: *mut GLuint) {
     with_context(|ctx| {
+        ctx.outside_begin_end()?;
+        // A NULL destination is refused before any name is made (no effect on error).
+        if n > 0 && buffers.is_null() {
+            return Err(GlError::InvalidValue);
+        }
         let names = ctx.gen_buffers(n)?;
         // SAFETY: the caller guarantees room for `n` names at a non-NULL `buffers`.
         unsafe { write(buffers, &names) }
@@ -33,6 +38,7 @@ pub unsafe extern "C" fn glGenBuffers(n: GLsizei, buffers: *mut GLuint) {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn glDeleteBuffers(n: GLsizei, buffers: *const GLuint) {
     with_context(|ctx| {
+        ctx.outside_begin_end()?;
         let count = usize::try_from(n).map_err(|_| GlError::InvalidValue)?;
         // SAFETY: the caller guarantees `n` names at a non-NULL `buffers`.
         let names = unsafe { read(buffers, count) };

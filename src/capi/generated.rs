@@ -1736,9 +1736,9 @@ pub extern "C" fn glCopyPixels(_x: GLint, _y: GLint, width: GLsizei, height: GLs
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn glGenQueries(n: GLsizei, ids: *mut GLuint) {
     with_context(|ctx| {
-        let written = ctx.gen_queries(n)?;
         // SAFETY: the caller's guarantee, forwarded.
-        unsafe { write(ids, &written[..]) }
+        let ids = unsafe { read_mut(ids, n.max(0) as usize) };
+        ctx.gen_queries(n, ids)
     })
 }
 

@@ -44,13 +44,19 @@ pub(crate) fn with_context<R: Default>(command: impl FnOnce(&mut Context) -> GlR
     .unwrap_or_default()
 }
 
+/// Whether `count` values are more than any memory holds (isize::MAX bytes): a size made of
+/// hostile arguments, which no pointer can honor; it reads nothing, like NULL.
+fn beyond_memory<T>(count: usize) -> bool {
+    count > isize::MAX as usize / std::mem::size_of::<T>().max(1)
+}
+
 /// `count` values at `ptr`, or an empty slice for NULL (the command then reports
 /// GL_INVALID_VALUE when it needs values).
 ///
 /// # Safety
 /// A non-NULL `ptr` must point to at least `count` readable values.
 pub(crate) unsafe fn read<'a, T>(ptr: *const T, count: usize) -> &'a [T] {
-    if ptr.is_null() {
+    if ptr.is_null() || beyond_memory::<T>(count) {
         &[]
     } else {
         // SAFETY: the caller guarantees `count` readable values at a non-NULL `ptr`.
@@ -64,7 +70,7 @@ pub(crate) unsafe fn read<'a, T>(ptr: *const T, count: usize) -> &'a [T] {
 /// # Safety
 /// A non-NULL `ptr` must point to at least `count` writable values.
 pub(crate) unsafe fn read_mut<'a, T>(ptr: *mut T, count: usize) -> &'a mut [T] {
-    if ptr.is_null() {
+    if ptr.is_null() || beyond_memory::<T>(count) {
         &mut []
     } else {
         // SAFETY: the caller guarantees `count` writable values at a non-NULL `ptr`.

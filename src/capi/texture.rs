@@ -4,9 +4,20 @@
 use std::ffi::c_void;
 
 use super::{read, read_mut, with_context};
-use crate::commands::list::ImageCommand;
+use crate::commands::list::{Command, ImageCommand};
 use crate::commands::texture::{SubImageArgs, TexImageArgs};
+use crate::context::Context;
+use crate::error::GlResult;
 use crate::gl::*;
+
+/// The compressed image commands always fail (no compressed format); while a list is
+/// compiled, §5.4 compiles them, so their error is recorded and raised when the list runs.
+fn compressed(command: impl FnOnce(&mut Context) -> GlResult) {
+    with_context(|ctx| match command(ctx) {
+        Err(error) if ctx.compiling_list() => ctx.record_or_run(Command::Error(error)),
+        result => result,
+    })
+}
 
 /// # Safety
 /// `pixels` is NULL (an image of zeros) or points to the bytes the image occupies under the
@@ -226,7 +237,7 @@ pub extern "C" fn glCompressedTexImage1D(
     _image_size: GLsizei,
     _data: *const c_void,
 ) {
-    with_context(|ctx| ctx.compressed_tex_image())
+    compressed(|ctx| ctx.compressed_tex_image())
 }
 
 /// No compressed format is supported: GL_INVALID_ENUM (nothing is read).
@@ -241,7 +252,7 @@ pub extern "C" fn glCompressedTexImage2D(
     _image_size: GLsizei,
     _data: *const c_void,
 ) {
-    with_context(|ctx| ctx.compressed_tex_image())
+    compressed(|ctx| ctx.compressed_tex_image())
 }
 
 /// No compressed format is supported: GL_INVALID_ENUM (nothing is read).
@@ -257,7 +268,7 @@ pub extern "C" fn glCompressedTexImage3D(
     _image_size: GLsizei,
     _data: *const c_void,
 ) {
-    with_context(|ctx| ctx.compressed_tex_image())
+    compressed(|ctx| ctx.compressed_tex_image())
 }
 
 /// No image is compressed: GL_INVALID_OPERATION for a valid target and level (nothing is
@@ -272,7 +283,7 @@ pub extern "C" fn glCompressedTexSubImage1D(
     _image_size: GLsizei,
     _data: *const c_void,
 ) {
-    with_context(|ctx| ctx.compressed_tex_sub_image(1, target, level))
+    compressed(|ctx| ctx.compressed_tex_sub_image(1, target, level))
 }
 
 /// No image is compressed: GL_INVALID_OPERATION for a valid target and level (nothing is
@@ -289,7 +300,7 @@ pub extern "C" fn glCompressedTexSubImage2D(
     _image_size: GLsizei,
     _data: *const c_void,
 ) {
-    with_context(|ctx| ctx.compressed_tex_sub_image(2, target, level))
+    compressed(|ctx| ctx.compressed_tex_sub_image(2, target, level))
 }
 
 /// No image is compressed: GL_INVALID_OPERATION for a valid target and level (nothing is
@@ -308,7 +319,7 @@ pub extern "C" fn glCompressedTexSubImage3D(
     _image_size: GLsizei,
     _data: *const c_void,
 ) {
-    with_context(|ctx| ctx.compressed_tex_sub_image(3, target, level))
+    compressed(|ctx| ctx.compressed_tex_sub_image(3, target, level))
 }
 
 /// No image is compressed: GL_INVALID_OPERATION for a valid target and level (nothing is

@@ -319,7 +319,8 @@ impl Context {
     /// ```
     /// use fflight::{gl::*, Context};
     /// let mut ctx = Context::new();
-    /// let ids = ctx.gen_queries(1)?;
+    /// let mut ids = [0; 1];
+    /// ctx.gen_queries(1, &mut ids)?;
     /// ctx.begin_query(GL_SAMPLES_PASSED, ids[0])?;
     /// ctx.end_query(GL_SAMPLES_PASSED)?;
     /// // Nothing is rasterized: no sample ever passes, and the result is available at once.
@@ -327,10 +328,13 @@ impl Context {
     /// assert_eq!(ctx.get_query_object(ids[0], GL_QUERY_RESULT_AVAILABLE)?, 1);
     /// # Ok::<(), fflight::GlError>(())
     /// ```
-    pub fn gen_queries(&mut self, count: i32) -> GlResult<Vec<GLuint>> {
+    pub fn gen_queries(&mut self, count: i32, names: &mut [GLuint]) -> GlResult {
         self.outside_begin_end()?;
         let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
-        Ok(self.queries.generate(count))
+        // Checked before any name is made: a NULL destination (an empty slice) changes nothing.
+        let names = names.get_mut(..count).ok_or(GlError::InvalidValue)?;
+        names.copy_from_slice(&self.queries.generate(count));
+        Ok(())
     }
 
     /// glDeleteQueries: `ids` holds `count` names (fewer: a NULL pointer).
@@ -340,7 +344,8 @@ impl Context {
     /// ```
     /// use fflight::{gl::*, Context};
     /// let mut ctx = Context::new();
-    /// let ids = ctx.gen_queries(2)?;
+    /// let mut ids = [0; 2];
+    /// ctx.gen_queries(2, &mut ids)?;
     /// ctx.begin_query(GL_SAMPLES_PASSED, ids[0])?;
     /// ctx.end_query(GL_SAMPLES_PASSED)?;
     /// ctx.delete_queries(2, &ids)?;
@@ -364,7 +369,8 @@ impl Context {
     /// ```
     /// use fflight::{gl::*, Context};
     /// let mut ctx = Context::new();
-    /// let ids = ctx.gen_queries(1)?;
+    /// let mut ids = [0; 1];
+    /// ctx.gen_queries(1, &mut ids)?;
     /// assert!(!ctx.is_query(ids[0])?); // an object only once a query began with it
     /// ctx.begin_query(GL_SAMPLES_PASSED, ids[0])?;
     /// assert!(ctx.is_query(ids[0])?);

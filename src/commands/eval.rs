@@ -284,6 +284,14 @@ impl Context {
     /// ```
     pub fn eval_mesh2(&mut self, mode: GLenum, [i1, i2]: [i32; 2], [j1, j2]: [i32; 2]) -> GlResult {
         self.outside_begin_end()?;
+        // An empty range in either direction makes only empty strips: skip the up to 2^32
+        // of them a hostile range would begin and end one by one (found by the sweep).
+        if i1 > i2 || j1 > j2 {
+            return match mode {
+                GL_FILL | GL_LINE | GL_POINT => Ok(()),
+                _ => Err(GlError::InvalidEnum),
+            };
+        }
         match mode {
             GL_FILL => {
                 for j in j1..j2 {

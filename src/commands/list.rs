@@ -26,6 +26,10 @@ use crate::state::pixel::PixelStoreModes;
 /// GL_MAX_LIST_NESTING (Mesa's value): calls nested deeper are ignored.
 pub const MAX_LIST_NESTING: usize = 64;
 
+/// The most names one glGenLists reserves (a larger range returns 0, as when no block of
+/// unused names is left).
+const MAX_LIST_RANGE: u32 = 1 << 20;
+
 /// One command of a display list.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Command {
@@ -528,6 +532,12 @@ impl Context {
         self.outside_begin_end()?;
         let count = u32::try_from(range).map_err(|_| GlError::InvalidValue)?;
         if count == 0 {
+            return Ok(0);
+        }
+        // §5.4: 0 when no group of `range` unused names is available; fflight reserves at most
+        // MAX_LIST_RANGE names a call (each reserved name is an empty list), so a huge range
+        // gets 0 at once instead of minutes of work.
+        if count > MAX_LIST_RANGE {
             return Ok(0);
         }
         let Some(first) = self.lists.free_block(count) else {

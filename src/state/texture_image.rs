@@ -441,22 +441,25 @@ impl Layout {
         let element = format.ty.size;
         let pixel_bytes = format.pixel_bytes();
         let alignment = modes.alignment.max(1) as usize;
-        let row_bytes = pixel_bytes * row_length;
+        // Saturating: hostile sizes and pixel store modes (2^31 rows of 2^31 pixels) must give
+        // a span no memory holds, never an overflow (found by the entry-point sweep).
+        let row_bytes = pixel_bytes.saturating_mul(row_length);
         let row_stride = if element >= alignment {
             row_bytes
         } else {
-            row_bytes.div_ceil(alignment) * alignment
+            row_bytes.div_ceil(alignment).saturating_mul(alignment)
         };
-        let image_stride = row_stride * image_height;
+        let image_stride = row_stride.saturating_mul(image_height);
         let skip_images = if three_d {
             modes.skip_images.max(0) as usize
         } else {
             0
         };
         Layout {
-            start: skip_images * image_stride
-                + modes.skip_rows.max(0) as usize * row_stride
-                + modes.skip_pixels.max(0) as usize * pixel_bytes,
+            start: skip_images
+                .saturating_mul(image_stride)
+                .saturating_add((modes.skip_rows.max(0) as usize).saturating_mul(row_stride))
+                .saturating_add((modes.skip_pixels.max(0) as usize).saturating_mul(pixel_bytes)),
             pixel_bytes,
             row_stride,
             image_stride,
@@ -481,7 +484,10 @@ impl Layout {
         if w == 0 || h == 0 || d == 0 {
             return 0;
         }
-        self.start + (d - 1) * self.image_stride + (h - 1) * self.row_stride + w * self.pixel_bytes
+        self.start
+            .saturating_add((d - 1).saturating_mul(self.image_stride))
+            .saturating_add((h - 1).saturating_mul(self.row_stride))
+            .saturating_add(w.saturating_mul(self.pixel_bytes))
     }
 
     fn offset(&self, x: usize, y: usize, z: usize) -> usize {

@@ -1,0 +1,66 @@
+#!/bin/sh
+# make test-valgrind-rust: the Rust test binaries that exercise the library, and the
+# entry-point sweep's program, under valgrind memcheck, two at a time. Any memory error or
+# definite leak fails (threads that exit without destroying their default context
+# included: every Rust test runs on a thread of its own). Run after `cargo test`, which
+# builds the binaries and writes the sweep's generated header.
+#
+# Skipped, and why:
+#   c_programs  spawns gcc and the C programs; `make test-valgrind` runs those programs
+#               under memcheck itself.
+#   sweep       spawns gcc; its program is run under memcheck below, directly.
+#   header      runs cbindgen over the sources, no library code.
+#   symbols     runs nm over the built library, no library code.
+#   batch_engine, robustness
+#               14 s and 80 s of random states and sequences natively: 10 to 60 minutes
+#               under memcheck. The sweep below covers the same entry points with hostile
+#               arguments under memcheck; ASan and memcheck also run every C program.
+set -u
+cd "$(dirname "$0")/.."
+out=target/valgrind-rust
+mkdir -p "$out"
+skip=" c_programs sweep header symbols batch_engine robustness "
+VALGRIND="valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite"
+
+cargo test --no-run --message-format=json 2>/dev/null |
+    python3 -c '
+import json, sys
+for line in sys.stdin:
+    try:
+        m = json.loads(line)
+    except ValueError:
+        continue
+    if m.get("reason") == "compiler-artifact" and m.get("executable") and m["profile"]["test"]:
+        print(m["target"]["name"], m["executable"])
+' > "$out/binaries.txt"
+
+: > "$out/run.txt"
+while read -r name exe; do
+    case "$skip" in *" $name "*) continue ;; esac
+    echo "$name $exe" >> "$out/run.txt"
+done < "$out/binaries.txt"
+
+start=$(date +%s)
+status=0
+# One job per line: the test binaries, then the sweep (one argument draw per function and
+# situation, 5 s of random calls; calls may take minutes under memcheck).
+{
+    cat "$out/run.txt"
+    echo "sweep-program target/sweep/sweep"
+} | xargs -P2 -L1 sh -c '
+    name=$0 exe=$1
+    if [ "$name" = sweep-program ]; then
+        SWEEP_ROUNDS=1 SWEEP_SECONDS=5 SWEEP_CALL_SECONDS=600 timeout 1200 '"$VALGRIND"' "$exe" \
+            > '"$out"'/$name.out 2> '"$out"'/$name.err
+    else
+        timeout 1200 '"$VALGRIND"' "$exe" -q > '"$out"'/$name.out 2> '"$out"'/$name.err
+    fi
+    rc=$?
+    if [ $rc != 0 ]; then
+        echo "valgrind-rust: $name failed ($rc)"; tail -n 60 '"$out"'/$name.err; tail -n 20 '"$out"'/$name.out
+        exit 255
+    fi
+    echo "valgrind-rust: $name clean"
+' || status=1
+echo "test-valgrind-rust: $(wc -l < "$out/run.txt") test binaries and the sweep under memcheck in $(( $(date +%s) - start )) s"
+exit $status
