@@ -8,7 +8,7 @@ CFLAGS_STRICT := -std=c99 -Wall -Wextra -Werror -pedantic
 LIB := target/debug/libfflight.a
 DEMO_DIR := target/demo
 
-.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind
+.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind fuzz fuzz-osmesa
 
 all: build
 
@@ -156,3 +156,27 @@ test-valgrind:
 		'valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite {} \
 		> /dev/null 2> {}.valgrind; if [ $$? = 99 ]; then echo "valgrind: {}"; cat {}.valgrind; exit 255; fi'
 	@echo "test-valgrind: $$(ls target/c_tests/*.fflight | wc -l) programs under memcheck, no error, no definite leak"
+
+# ---- fuzzing (not run by make test; cargo test replays the seeds and findings) ----
+# make fuzz: the coverage-guided target of the C ABI (fuzz/, cargo fuzz with libFuzzer, built on
+# stable with --sanitizer none) for FUZZ_TIME seconds; prints executions, coverage and
+# findings (fuzz/artifacts/capi_calls/). cargo-fuzz is installed into target/tools.
+FUZZ_TIME ?= 600
+FUZZ_TOOLS := $(CURDIR)/target/tools
+FUZZ_BIN = fuzz/target/$$(rustc -vV | sed -n 's/host: //p')/release/capi_calls
+fuzz: deps
+	@test -x $(FUZZ_TOOLS)/bin/cargo-fuzz || $(CARGO) install --locked --root $(FUZZ_TOOLS) cargo-fuzz
+	cd fuzz && PATH="$(FUZZ_TOOLS)/bin:$$PATH" $(CARGO) fuzz build --sanitizer none -O capi_calls
+	@mkdir -p fuzz/corpus/capi_calls fuzz/artifacts/capi_calls target/fuzz
+	@$(FUZZ_BIN) -dict=fuzz/gl_enums.dict -max_total_time=$(FUZZ_TIME) -max_len=256 -print_final_stats=1 \
+		-artifact_prefix=fuzz/artifacts/capi_calls/ fuzz/corpus/capi_calls fuzz/seeds/capi_calls \
+		> target/fuzz/capi_calls.log 2>&1; status=$$?; \
+	grep -E 'INITED|DONE|stat::' target/fuzz/capi_calls.log | tail -7; \
+	echo "findings: $$(ls fuzz/artifacts/capi_calls | wc -l) in fuzz/artifacts/capi_calls/ (log: target/fuzz/capi_calls.log)"; \
+	exit $$status
+
+# make fuzz-osmesa SEQUENCES=N: N random command sequences run on fflight and OSMesa in one
+# process (tests/osmesa_fuzz.rs, release build), outputs compared with the C harness's rules.
+SEQUENCES ?= 100000
+fuzz-osmesa: deps
+	FFL_OSMESA_SEQUENCES=$(SEQUENCES) $(CARGO) test --release --test osmesa_fuzz -- --nocapture

@@ -360,7 +360,7 @@ impl<'a> Harness<'a> {
     /// A pointer for a command to read from (NULL one time in 32).
     pub fn input_pointer(&mut self, region: Region) -> *const c_void {
         let tag = self.byte();
-        if tag % 32 == 0 {
+        if tag.is_multiple_of(32) {
             return std::ptr::null();
         }
         let region = match region {
@@ -381,7 +381,7 @@ impl<'a> Harness<'a> {
     /// A pointer for a command to write to: parameter `index` has its own slot, so no two
     /// outputs of a call overlap (NULL one time in 64).
     pub fn output_pointer(&mut self, index: usize) -> *mut c_void {
-        if self.byte() % 64 == 0 {
+        if self.byte().is_multiple_of(64) {
             return std::ptr::null_mut();
         }
         // SAFETY: inside the arena.
@@ -578,7 +578,7 @@ impl<'a> Harness<'a> {
                 }
             }
             "fflDestroyContext" => {
-                if self.slots.len() == 1 || self.byte() % 16 == 0 {
+                if self.slots.len() == 1 || self.byte().is_multiple_of(16) {
                     // SAFETY: NULL is allowed.
                     if unsafe { fflDestroyContext(std::ptr::null_mut()) } != GL_FALSE {
                         self.fail("fflDestroyContext(NULL) succeeded".into());
@@ -634,7 +634,7 @@ impl<'a> Harness<'a> {
                 let inside = self.inside_begin_end();
                 let size = self.integer(IntClass::Count) as GLsizei;
                 let kind = self.enumeration();
-                let null = self.byte() % 32 == 0;
+                let null = self.byte().is_multiple_of(32);
                 let slot = &mut self.slots[self.current];
                 let buffer = if null {
                     std::ptr::null_mut()
@@ -660,7 +660,7 @@ impl<'a> Harness<'a> {
             "glSelectBuffer" => {
                 let inside = self.inside_begin_end();
                 let size = self.integer(IntClass::Count) as GLsizei;
-                let null = self.byte() % 32 == 0;
+                let null = self.byte().is_multiple_of(32);
                 let slot = &mut self.slots[self.current];
                 let buffer = if null {
                     std::ptr::null_mut()
