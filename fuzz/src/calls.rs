@@ -2107,10 +2107,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glIsList(a0) };
         }
-        204 => {
-            let a0 = h.integer(IntClass::Any) as GLuint;
-            let _ = unsafe { glCallList(a0) };
-        }
+        204 => h.special("glCallList"),
         205 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glListBase(a0) };
@@ -3758,12 +3755,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a0 = h.enumeration();
             let _ = unsafe { glIsEnabled(a0) };
         }
-        495 => {
-            let a0 = h.integer(IntClass::Count) as GLsizei;
-            let a1 = h.enumeration();
-            let a2 = h.input_pointer(Region::Any) as *const c_void;
-            let _ = unsafe { glCallLists(a0, a1, a2) };
-        }
+        495 => h.special("glCallLists"),
         496 => h.special("glGetError"),
         497 => {
             let a0 = h.enumeration();

@@ -39,6 +39,8 @@ pub const SPECIAL: &[&str] = &[
     "glMultiDrawElements",
     "glPixelStoref",
     "glPixelStorei",
+    "glCallList",
+    "glCallLists",
 ];
 
 fn strip_comments(text: &str) -> String {

@@ -258,6 +258,8 @@ pub struct Harness<'a> {
     /// The name of the call being made, for messages.
     calling: &'static str,
     maxima: [i32; 5],
+    /// How many glCallList / glCallLists each list being compiled got (by GL_LIST_INDEX).
+    list_calls: Vec<(i32, u32)>,
     /// How many calls were made.
     pub calls: usize,
 }
@@ -716,6 +718,37 @@ impl<'a> Harness<'a> {
                 // SAFETY: plain values.
                 unsafe { glPixelStorei(pname, param) };
             }
+            "glCallList" | "glCallLists" => {
+                let (mut n, kind, lists) = match name {
+                    "glCallList" => (1, 0, std::ptr::null()),
+                    _ => (
+                        self.integer(IntClass::Count).min(64) as GLsizei,
+                        self.enumeration(),
+                        self.input_pointer(Region::Any),
+                    ),
+                };
+                let list = (name == "glCallList").then(|| self.integer(IntClass::Any) as GLuint);
+                // A list that calls lists twice, nested 64 deep, runs 2^64 times: GL allows
+                // it (and hangs), the fuzzer must not. Each list being compiled gets one call
+                // of one list (GL_LIST_INDEX; unknown between a compiled-and-executed glBegin
+                // and glEnd, counted together), so nested lists stay a chain.
+                let [index] = self.get_ints::<1>(GL_LIST_INDEX);
+                if index != 0 {
+                    match self.list_calls.iter_mut().find(|(i, _)| *i == index) {
+                        Some((_, calls)) if *calls >= 1 => return,
+                        Some((_, calls)) => *calls += 1,
+                        None => self.list_calls.push((index, 1)),
+                    }
+                    n = n.min(1);
+                }
+                // SAFETY: n names of at most 4 bytes in the arena.
+                unsafe {
+                    match list {
+                        Some(list) => glCallList(list),
+                        None => glCallLists(n, kind, lists),
+                    }
+                }
+            }
             other => self.fail(format!("no special handling for {other}")),
         }
     }
@@ -780,6 +813,7 @@ impl<'a> Harness<'a> {
             failure: None,
             calling: "setup",
             maxima: [0; 5],
+            list_calls: Vec::new(),
             calls: 0,
         };
         h.maxima = [
