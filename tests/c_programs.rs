@@ -496,6 +496,8 @@ c_programs!(
     random_lighting,
     osmesa_diff_shininess0_attenuation,
     osmesa_diff_zero_pow_zero,
+    osmesa_diff_zero_area_facing,
+    osmesa_diff_color_material_change,
     osmesa_diff_get_integer,
     osmesa_diff_vertex_w,
     osmesa_diff_line_reset,

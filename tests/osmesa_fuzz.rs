@@ -10,7 +10,8 @@
 //! The generator stays clear of the documented OSMesa differences (docs/osmesa-differences.md:
 //! no line primitives (1), smooth shading only (2), fill polygon mode (3), vector pnames
 //! through the vector commands (4), no glColorMaterial(GL_BACK) (5), no texture coordinates
-//! (6), shininess and spot exponent at least 1 (7, 8), w = 1 (9), no raster position (13)),
+//! (6), shininess and spot exponent at least 1 (7, 8), w = 1 (9), no raster position (13),
+//! no triangle of zero area (22), the color material mode chosen once and a glColor after its glEnable (23)),
 //! and keeps geometry inside the view volume (no vertex is made by clipping, whose tolerance
 //! needs the reference's `clip-made` marks).
 //!
@@ -440,10 +441,11 @@ fn op(rng: &mut Rng, transforms: &mut usize) -> Op {
             2 => Op::LightModel(0x0B51, vec![rng.below(2) as f32]),   // GL_LIGHT_MODEL_LOCAL_VIEWER
             _ => Op::LightModel(0x81F8, vec![rng.pick(&[0x81F9u32, 0x81FA]) as f32]), // COLOR_CONTROL
         },
-        7 => Op::ColorMaterial(
-            rng.pick(&[GL_FRONT, GL_FRONT_AND_BACK]),
-            rng.pick(&[0x1200, 0x1201, 0x1202, 0x1600, 0x1602]),
-        ),
+        7 => Op::Normal([
+            rng.uniform(-1.0, 1.0),
+            rng.uniform(-1.0, 1.0),
+            rng.uniform(-1.0, 1.0),
+        ]),
         8 => Op::MatrixMode(match rng.below(8) {
             0 => bad_enum(rng),
             1 => GL_PROJECTION,
@@ -492,7 +494,13 @@ fn op(rng: &mut Rng, transforms: &mut usize) -> Op {
             } else {
                 rng.pick(&MODES)
             };
-            let n = rng.below(10);
+            // glVertex outside glBegin/glEnd is undefined (§2.6.3): a glBegin that fails gets
+            // no vertices.
+            let n = if MODES.contains(&mode) {
+                rng.below(10)
+            } else {
+                0
+            };
             Op::Primitive(
                 mode,
                 (0..n).map(|_| vertex(rng)).collect(),
@@ -504,7 +512,15 @@ fn op(rng: &mut Rng, transforms: &mut usize) -> Op {
             let count = rng.below(20) as i32;
             let elements = (rng.below(2) == 0).then(|| {
                 let kind = rng.pick(&[GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT]);
-                (kind, (0..count).map(|_| rng.below(64) as u32).collect())
+                // Distinct indices: a repeated one in a strip or fan makes a triangle of zero
+                // area, whose two-sided lighting OSMesa gets wrong (difference 22).
+                let mut indices: Vec<u32> = (0..64).collect();
+                for i in 0..count as usize {
+                    let j = i + rng.below(64 - i);
+                    indices.swap(i, j);
+                }
+                indices.truncate(count as usize);
+                (kind, indices)
             });
             let first = rng.below(64 - count as usize) as i32;
             Op::Arrays {
@@ -533,10 +549,26 @@ fn sequence(seed: u64) -> (Vec<Op>, Arrays) {
     let data = arrays(&mut rng);
     let mut transforms = 0;
     let n = 10 + rng.below(60);
-    (
-        (0..n).map(|_| op(&mut rng, &mut transforms)).collect(),
-        data,
-    )
+    // The color material face and mode are chosen once, before anything is tracked
+    // (difference 23), and the shininess is at least 1 from the start (difference 7).
+    let mut ops = vec![
+        Op::ColorMaterial(
+            rng.pick(&[GL_FRONT, GL_FRONT_AND_BACK]),
+            rng.pick(&[0x1200, 0x1201, 0x1202, 0x1600, 0x1602]),
+        ),
+        Op::Material(GL_FRONT_AND_BACK, 0x1601, vec![rng.uniform(1.0, 20.0)]),
+    ];
+    for _ in 0..n {
+        let next = op(&mut rng, &mut transforms);
+        let enables_color_material = matches!(next, Op::Enable(GL_COLOR_MATERIAL, true));
+        ops.push(next);
+        if enables_color_material {
+            // A glColor after glEnable(GL_COLOR_MATERIAL): OSMesa does not give the tracked
+            // properties the current color at the glEnable (difference 23).
+            ops.push(Op::Color(rng.vec4(0.0, 1.0)));
+        }
+    }
+    (ops, data)
 }
 
 // ---- running a sequence on one library ----
@@ -613,17 +645,7 @@ fn run(lib: &Library, ops: &[Op], data: &Arrays) -> String {
     // SAFETY: every pointer given to GL below points to live data of the size GL reads, and
     // the feedback buffer outlives the context.
     unsafe {
-        let ctx = (g.create)();
-        assert!(!ctx.is_null());
-        match lib.osmesa_make_current {
-            Some(make) => {
-                let buffer = (&raw mut OSMESA_BUFFER).cast::<c_void>();
-                assert_eq!(make(ctx, buffer, 0x1401, 64, 64), 1);
-            }
-            None => {
-                FFL_MAKE_CURRENT.with(|m| m.get().unwrap()(ctx));
-            }
-        }
+        reset(g);
         (g.glViewport)(0, 0, 64, 64);
         (g.glMatrixMode)(GL_PROJECTION);
         (g.glOrtho)(-6.0, 6.0, -6.0, 6.0, -6.0, 6.0);
@@ -743,12 +765,112 @@ fn run(lib: &Library, ops: &[Op], data: &Arrays) -> String {
         let n = (g.glRenderMode)(GL_RENDER);
         print_feedback(&mut out, &feedback, n);
         writeln!(out, "end {}", error_name((g.glGetError)())).unwrap();
-        (g.destroy)(ctx);
+    }
+    out
+}
+
+/// Creates the library's context and makes it current: one context serves every sequence
+/// (OSMesa compiles a vertex program per lighting state and caches it in the context; a
+/// new context per sequence spends most of the time compiling the same programs again).
+fn start(lib: &Library) -> *mut c_void {
+    // SAFETY: the library's own context calls, with a live 64x64 buffer for OSMesa.
+    unsafe {
+        let ctx = (lib.gl.create)();
+        assert!(!ctx.is_null());
+        match lib.osmesa_make_current {
+            Some(make) => {
+                let buffer = (&raw mut OSMESA_BUFFER).cast::<c_void>();
+                assert_eq!(make(ctx, buffer, 0x1401, 64, 64), 1);
+            }
+            None => {
+                FFL_MAKE_CURRENT.with(|m| m.get().unwrap()(ctx));
+            }
+        }
+        ctx
+    }
+}
+
+fn stop(lib: &Library, ctx: *mut c_void) {
+    // SAFETY: the context `start` made; fflight's is released first.
+    unsafe {
         if lib.build == Build::Fflight {
             FFL_MAKE_CURRENT.with(|m| m.get().unwrap()(std::ptr::null_mut()));
         }
+        (lib.gl.destroy)(ctx);
     }
-    out
+}
+
+/// Puts back GL's initial values of everything a sequence may change (§6.2's tables), so each
+/// sequence starts from the state of a new context.
+///
+/// # Safety
+/// The library's context is current; no glBegin is open (every sequence closes its own).
+unsafe fn reset(g: &Gl) {
+    const GL_AMBIENT: E = 0x1200;
+    const GL_AMBIENT_AND_DIFFUSE: E = 0x1602;
+    // SAFETY: plain values and pointers to arrays of the sizes each pname reads.
+    unsafe {
+        for cap in [
+            GL_LIGHTING,
+            GL_NORMALIZE,
+            GL_RESCALE_NORMAL,
+            GL_COLOR_MATERIAL,
+            GL_CULL_FACE,
+        ] {
+            (g.glDisable)(cap);
+        }
+        for light in 0..8 {
+            (g.glDisable)(GL_LIGHT0 + light);
+        }
+        for (mode, depth_pname) in [
+            (GL_PROJECTION, GL_PROJECTION_STACK_DEPTH),
+            (GL_MODELVIEW, GL_MODELVIEW_STACK_DEPTH),
+        ] {
+            (g.glMatrixMode)(mode);
+            let mut depth = 0;
+            (g.glGetIntegerv)(depth_pname, &mut depth);
+            for _ in 1..depth {
+                (g.glPopMatrix)();
+            }
+            (g.glLoadIdentity)();
+        }
+        let none = [0.0, 0.0, 0.0, 1.0];
+        let white = [1.0; 4];
+        for light in 0..3 {
+            let lit = if light == 0 { white } else { none };
+            (g.glLightfv)(GL_LIGHT0 + light, GL_AMBIENT, none.as_ptr());
+            (g.glLightfv)(GL_LIGHT0 + light, 0x1201, lit.as_ptr());
+            (g.glLightfv)(GL_LIGHT0 + light, 0x1202, lit.as_ptr());
+            (g.glLightfv)(GL_LIGHT0 + light, 0x1203, [0.0, 0.0, 1.0, 0.0].as_ptr());
+            (g.glLightfv)(GL_LIGHT0 + light, 0x1204, [0.0, 0.0, -1.0].as_ptr());
+            for (pname, value) in [
+                (0x1205, 0.0),
+                (0x1206, 180.0),
+                (0x1207, 1.0),
+                (0x1208, 0.0),
+                (0x1209, 0.0),
+            ] {
+                (g.glLightfv)(GL_LIGHT0 + light, pname, &value);
+            }
+        }
+        (g.glMaterialfv)(GL_FRONT_AND_BACK, GL_AMBIENT, [0.2, 0.2, 0.2, 1.0].as_ptr());
+        (g.glMaterialfv)(GL_FRONT_AND_BACK, 0x1201, [0.8, 0.8, 0.8, 1.0].as_ptr());
+        (g.glMaterialfv)(GL_FRONT_AND_BACK, 0x1202, none.as_ptr());
+        (g.glMaterialfv)(GL_FRONT_AND_BACK, 0x1600, none.as_ptr());
+        (g.glMaterialfv)(GL_FRONT_AND_BACK, 0x1601, &0.0);
+        (g.glLightModelfv)(0x0B53, [0.2, 0.2, 0.2, 1.0].as_ptr());
+        (g.glLightModelfv)(0x0B52, &0.0);
+        (g.glLightModelfv)(0x0B51, &0.0);
+        (g.glLightModelfv)(0x81F8, &(0x81F9 as f32));
+        (g.glColorMaterial)(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+        (g.glColor4f)(1.0, 1.0, 1.0, 1.0);
+        (g.glNormal3f)(0.0, 0.0, 1.0);
+        (g.glFrontFace)(GL_CCW);
+        (g.glCullFace)(GL_BACK);
+        (g.glDisableClientState)(GL_NORMAL_ARRAY);
+        (g.glDisableClientState)(GL_COLOR_ARRAY);
+        while (g.glGetError)() != 0 {}
+    }
 }
 
 /// Runs `count` sequences from `first`; returns (differing seeds with their report, stats).
@@ -757,10 +879,17 @@ fn fuzz(first: u64, count: u64) -> (Vec<(u64, String)>, MaxDiff) {
     let osmesa = load(Build::Osmesa);
     let mut stats = MaxDiff::default();
     let mut differences = Vec::new();
+    let (fflight_context, osmesa_context) = (start(&fflight), start(&osmesa));
     for seed in first..first + count {
         let (ops, data) = sequence(seed);
         let a = run(&fflight, &ops, &data);
         let b = run(&osmesa, &ops, &data);
+        if std::env::var("FFL_OSMESA_DUMP").is_ok_and(|s| s == seed.to_string()) {
+            let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/osmesa_fuzz");
+            std::fs::create_dir_all(&dir).unwrap();
+            std::fs::write(dir.join(format!("{seed}.fflight")), &a).unwrap();
+            std::fs::write(dir.join(format!("{seed}.osmesa")), &b).unwrap();
+        }
         let mut report = Report::new(&format!("seed {seed}"));
         check_differential(&mut report, &a, &b, &mut stats);
         if !report.failures.is_empty() {
@@ -777,7 +906,51 @@ fn fuzz(first: u64, count: u64) -> (Vec<(u64, String)>, MaxDiff) {
             differences.push((seed, text));
         }
     }
+    stop(&fflight, fflight_context);
+    stop(&osmesa, osmesa_context);
     (differences, stats)
+}
+
+/// `FFL_OSMESA_MINIMIZE=<seed>`: drops the calls of a differing sequence one at a time while
+/// the outputs still differ, and prints what is left (to find a difference's cause).
+#[test]
+fn minimize_a_difference() {
+    let Some(seed) = std::env::var("FFL_OSMESA_MINIMIZE")
+        .ok()
+        .and_then(|s| s.parse().ok())
+    else {
+        return;
+    };
+    let (fflight, osmesa) = (load(Build::Fflight), load(Build::Osmesa));
+    let contexts = (start(&fflight), start(&osmesa));
+    let (mut ops, data) = sequence(seed);
+    let differs = |ops: &[Op]| {
+        let mut report = Report::new("minimize");
+        let (a, b) = (run(&fflight, ops, &data), run(&osmesa, ops, &data));
+        check_differential(&mut report, &a, &b, &mut MaxDiff::default());
+        (!report.failures.is_empty()).then(|| report.failures[0].clone())
+    };
+    assert!(differs(&ops).is_some(), "seed {seed} does not differ");
+    let mut i = 0;
+    while i < ops.len() {
+        let mut fewer = ops.clone();
+        fewer.remove(i);
+        if differs(&fewer).is_some() {
+            ops = fewer;
+        } else {
+            i += 1;
+        }
+    }
+    println!(
+        "seed {seed}, {} calls left: {}",
+        ops.len(),
+        differs(&ops).unwrap()
+    );
+    for (k, op) in ops.iter().enumerate() {
+        println!("  {k}: {op:?}");
+    }
+    stop(&fflight, contexts.0);
+    stop(&osmesa, contexts.1);
 }
 
 fn env_u64(name: &str, default: u64) -> u64 {
@@ -798,10 +971,11 @@ fn fflight_agrees_with_osmesa_on_random_sequences() {
     let start = std::time::Instant::now();
     let (differences, stats) = fuzz(first, count);
     println!(
-        "osmesa-fuzz: {count} sequences (seeds {first}..{}), {} with an unexplained difference, \
+        "osmesa-fuzz: {count} sequences (seeds {first}..{}), {} with an unexplained difference {:?}, \
          {:.1} s; {}",
         first + count,
         differences.len(),
+        differences.iter().map(|d| d.0).collect::<Vec<_>>(),
         start.elapsed().as_secs_f64(),
         summarize(&stats)
     );
