@@ -1,7 +1,9 @@
 //! Differential command-sequence fuzzing against OSMesa: random sequences of valid and invalid
 //! GL calls (lighting, materials, light model, color material, matrices and their stack,
 //! enables, culling, current attributes, primitives in glBegin/glEnd, vertex arrays with
-//! glDrawArrays and glDrawElements, feedback, queries), generated from a seed, run by this one
+//! glDrawArrays and glDrawElements, feedback, selection with small buffers and name stack
+//! overflows and underflows, queries of current values, matrices, lights and materials),
+//! generated from a seed, run by this one
 //! process on both libraries, each loaded with dlopen (`libfflight.so` built by cargo and
 //! Debian's `libOSMesa.so.8`): every call's error and every feedback pass are printed in the
 //! canonical format of `c_tests/ffl_test.h` and compared with the C harness's own comparison
@@ -69,6 +71,13 @@ struct Gl {
     glIsEnabled: unsafe extern "C" fn(E) -> u8,
     glFrontFace: unsafe extern "C" fn(E),
     glCullFace: unsafe extern "C" fn(E),
+    glSelectBuffer: unsafe extern "C" fn(i32, *mut u32),
+    glInitNames: unsafe extern "C" fn(),
+    glPushName: unsafe extern "C" fn(u32),
+    glPopName: unsafe extern "C" fn(),
+    glLoadName: unsafe extern "C" fn(u32),
+    glGetLightfv: unsafe extern "C" fn(E, E, *mut F),
+    glGetMaterialfv: unsafe extern "C" fn(E, E, *mut F),
     create: unsafe extern "C" fn() -> *mut c_void,
     destroy: unsafe extern "C" fn(*mut c_void),
 }
@@ -212,7 +221,14 @@ fn load(build: Build) -> Library {
         glGetIntegerv,
         glIsEnabled,
         glFrontFace,
-        glCullFace
+        glCullFace,
+        glSelectBuffer,
+        glInitNames,
+        glPushName,
+        glPopName,
+        glLoadName,
+        glGetLightfv,
+        glGetMaterialfv
     );
     let library = Library {
         build,
@@ -275,6 +291,7 @@ const GL_MODELVIEW: E = 0x1700;
 const GL_PROJECTION: E = 0x1701;
 const GL_FEEDBACK: E = 0x1C01;
 const GL_RENDER: E = 0x1C00;
+const GL_SELECT: E = 0x1C02;
 const GL_3D_COLOR: E = 0x0602;
 const GL_FLOAT: E = 0x1406;
 const GL_UNSIGNED_BYTE: E = 0x1401;
@@ -325,6 +342,8 @@ enum Op {
     ColorMaterial(E, E),
     MatrixMode(E),
     LoadIdentity,
+    /// glLoadIdentity and the ortho projection of `run` (in GL_PROJECTION mode).
+    LoadOrtho,
     Translate([f32; 3]),
     Rotate([f32; 4]),
     Scale([f32; 3]),
@@ -348,7 +367,20 @@ enum Op {
     },
     /// glRenderMode(GL_RENDER): print the pass, start another.
     Flush,
+    /// Leaves feedback for a selection pass into a buffer of `size` names, then back.
+    Select(i32, Vec<Named>),
     Query,
+}
+
+/// What a selection pass does.
+#[derive(Clone, Debug)]
+enum Named {
+    Push(u32),
+    Pop,
+    Load(u32),
+    /// glPushName `n` times (past the stack's 64: GL_STACK_OVERFLOW).
+    PushMany(u32),
+    Primitive(E, Vec<([f32; 4], [f32; 3], [f32; 3])>),
 }
 
 /// Vertex data of the array draws: 64 vertices inside the view volume.
@@ -387,7 +419,15 @@ fn vertex(rng: &mut Rng) -> ([f32; 4], [f32; 3], [f32; 3]) {
     (c, n, p)
 }
 
-fn op(rng: &mut Rng, transforms: &mut usize) -> Op {
+/// What the generator keeps track of: the modelview's transforms since an identity (at most
+/// 3, so the geometry stays inside the view volume) and whether the projection matrix is the
+/// current one (it is only ever the ortho of `run`, pushed and popped).
+struct Shape {
+    transforms: usize,
+    projection: bool,
+}
+
+fn op(rng: &mut Rng, shape: &mut Shape) -> Op {
     let bad_enum = |rng: &mut Rng| rng.pick(&[0u32, 1, 0x1234, 0x4008, 0xFFFF_FFFF]);
     match rng.below(24) {
         0 | 1 => {
@@ -448,15 +488,22 @@ fn op(rng: &mut Rng, transforms: &mut usize) -> Op {
         ]),
         8 => Op::MatrixMode(match rng.below(8) {
             0 => bad_enum(rng),
-            1 => GL_PROJECTION,
-            _ => GL_MODELVIEW,
+            1 => {
+                shape.projection = true;
+                GL_PROJECTION
+            }
+            _ => {
+                shape.projection = false;
+                GL_MODELVIEW
+            }
         }),
+        9 if shape.projection => Op::LoadOrtho,
         9 => {
-            *transforms = 0;
+            shape.transforms = 0;
             Op::LoadIdentity
         }
-        10 | 11 if *transforms < 3 => {
-            *transforms += 1;
+        10 | 11 if shape.transforms < 3 && !shape.projection => {
+            shape.transforms += 1;
             match rng.below(3) {
                 0 => Op::Translate([
                     rng.uniform(-0.3, 0.3),
@@ -477,7 +524,13 @@ fn op(rng: &mut Rng, transforms: &mut usize) -> Op {
             }
         }
         12 => Op::Push,
-        13 => Op::Pop,
+        13 => {
+            if !shape.projection {
+                // The matrix popped may have had more transforms than the count says.
+                shape.transforms = 3;
+            }
+            Op::Pop
+        }
         14 => Op::Color(rng.vec4(0.0, 1.0)),
         15 => Op::Normal([
             rng.uniform(-1.0, 1.0),
@@ -540,6 +593,23 @@ fn op(rng: &mut Rng, transforms: &mut usize) -> Op {
             }
         }
         22 => Op::Flush,
+        23 if rng.below(2) == 0 => {
+            let size = 1 + rng.below(40) as i32;
+            let body = (0..1 + rng.below(12))
+                .map(|_| match rng.below(7) {
+                    0 => Named::Push(rng.below(100) as u32),
+                    1 => Named::Pop,
+                    2 => Named::Load(rng.below(100) as u32),
+                    3 if rng.below(4) == 0 => Named::PushMany(60 + rng.below(10) as u32),
+                    _ => {
+                        let mode = rng.pick(&MODES);
+                        let n = 1 + rng.below(8);
+                        Named::Primitive(mode, (0..n).map(|_| vertex(rng)).collect())
+                    }
+                })
+                .collect();
+            Op::Select(size, body)
+        }
         _ => Op::Query,
     }
 }
@@ -547,7 +617,10 @@ fn op(rng: &mut Rng, transforms: &mut usize) -> Op {
 fn sequence(seed: u64) -> (Vec<Op>, Arrays) {
     let mut rng = Rng(seed);
     let data = arrays(&mut rng);
-    let mut transforms = 0;
+    let mut shape = Shape {
+        transforms: 0,
+        projection: false,
+    };
     let n = 10 + rng.below(60);
     // The color material face and mode are chosen once, before anything is tracked
     // (difference 23), and the shininess is at least 1 from the start (difference 7).
@@ -559,7 +632,7 @@ fn sequence(seed: u64) -> (Vec<Op>, Arrays) {
         Op::Material(GL_FRONT_AND_BACK, 0x1601, vec![rng.uniform(1.0, 20.0)]),
     ];
     for _ in 0..n {
-        let next = op(&mut rng, &mut transforms);
+        let next = op(&mut rng, &mut shape);
         let enables_color_material = matches!(next, Op::Enable(GL_COLOR_MATERIAL, true));
         ops.push(next);
         if enables_color_material {
@@ -638,6 +711,38 @@ fn print_feedback(out: &mut String, buf: &[f32], n: i32) {
     }
 }
 
+/// Prints hit records the way ffl_print_hits does (depths labelled `zhit`), then what lies
+/// past the buffer's size (nothing may be written there).
+fn print_hits(out: &mut String, buf: &[u32], hits: i32, size: usize) {
+    writeln!(out, "sel hits {hits}").unwrap();
+    let (mut i, mut h) = (0, 0);
+    while if hits < 0 { i < size } else { h < hits } {
+        let names = buf[i] as usize;
+        i += 1;
+        write!(out, "sel hit names {names} zhit").unwrap();
+        let mut k = 0;
+        while k < 2 && i < size {
+            write!(out, " {}", buf[i]).unwrap();
+            i += 1;
+            k += 1;
+        }
+        out.push_str(" stack");
+        let mut k = 0;
+        while k < names && i < size {
+            write!(out, " {}", buf[i]).unwrap();
+            i += 1;
+            k += 1;
+        }
+        if k < names {
+            out.push_str(" cut\n");
+            return;
+        }
+        out.push('\n');
+        h += 1;
+    }
+    writeln!(out, "sel guard {:?}", &buf[size..]).unwrap();
+}
+
 fn run(lib: &Library, ops: &[Op], data: &Arrays) -> String {
     let g = &lib.gl;
     let mut out = String::new();
@@ -668,6 +773,10 @@ fn run(lib: &Library, ops: &[Op], data: &Arrays) -> String {
                 Op::ColorMaterial(f, m) => (g.glColorMaterial)(*f, *m),
                 Op::MatrixMode(m) => (g.glMatrixMode)(*m),
                 Op::LoadIdentity => (g.glLoadIdentity)(),
+                Op::LoadOrtho => {
+                    (g.glLoadIdentity)();
+                    (g.glOrtho)(-6.0, 6.0, -6.0, 6.0, -6.0, 6.0);
+                }
                 Op::Translate(v) => (g.glTranslatef)(v[0], v[1], v[2]),
                 Op::Rotate(v) => (g.glRotatef)(v[0], v[1], v[2], v[3]),
                 Op::Scale(v) => (g.glScalef)(v[0], v[1], v[2]),
@@ -735,8 +844,54 @@ fn run(lib: &Library, ops: &[Op], data: &Arrays) -> String {
                     print_feedback(&mut out, &feedback, n);
                     (g.glRenderMode)(GL_FEEDBACK);
                 }
+                Op::Select(size, body) => {
+                    let n = (g.glRenderMode)(GL_RENDER);
+                    print_feedback(&mut out, &feedback, n);
+                    let mut names = vec![0xdead_beef_u32; *size as usize + 8];
+                    (g.glSelectBuffer)(*size, names.as_mut_ptr());
+                    (g.glRenderMode)(GL_SELECT);
+                    (g.glInitNames)();
+                    for (i, named) in body.iter().enumerate() {
+                        match named {
+                            Named::Push(name) => (g.glPushName)(*name),
+                            Named::Pop => (g.glPopName)(),
+                            Named::Load(name) => (g.glLoadName)(*name),
+                            Named::PushMany(count) => (0..*count).for_each(|n| (g.glPushName)(n)),
+                            Named::Primitive(mode, vertices) => {
+                                (g.glBegin)(*mode);
+                                for (_, _, p) in vertices {
+                                    (g.glVertex3f)(p[0], p[1], p[2]);
+                                }
+                                (g.glEnd)();
+                            }
+                        }
+                        writeln!(out, "s{i} {}", error_name((g.glGetError)())).unwrap();
+                    }
+                    let hits = (g.glRenderMode)(GL_RENDER);
+                    print_hits(&mut out, &names, hits, *size as usize);
+                    (g.glRenderMode)(GL_FEEDBACK);
+                }
                 Op::Query => {
                     let mut v = [-7.0f32; 16];
+                    (g.glGetFloatv)(0x0BA6, v.as_mut_ptr()); // GL_MODELVIEW_MATRIX
+                    out.push_str("q modelview");
+                    pf(&mut out, "m", &v);
+                    out.push('\n');
+                    (g.glGetLightfv)(GL_LIGHT0 + 1, 0x1203, v.as_mut_ptr()); // GL_POSITION
+                    out.push_str("q light1");
+                    pf(&mut out, "position", &v[..4]);
+                    (g.glGetLightfv)(GL_LIGHT0 + 1, 0x1204, v.as_mut_ptr()); // GL_SPOT_DIRECTION
+                    pf(&mut out, "direction", &v[..3]);
+                    out.push('\n');
+                    for face in [GL_FRONT, GL_BACK] {
+                        write!(out, "q material {face:#x}").unwrap();
+                        for pname in [0x1200, 0x1201, 0x1202, 0x1600, 0x1601] {
+                            (g.glGetMaterialfv)(face, pname, v.as_mut_ptr());
+                            let n = if pname == 0x1601 { 1 } else { 4 };
+                            pf(&mut out, &format!("p{pname:x}"), &v[..n]);
+                        }
+                        out.push('\n');
+                    }
                     (g.glGetFloatv)(GL_CURRENT_COLOR, v.as_mut_ptr());
                     out.push_str("q color");
                     pf(&mut out, "rgba", &v[..4]);
