@@ -88,7 +88,22 @@ fn seed_corpus_replays_cleanly() {
 
 #[test]
 fn findings_stay_fixed() {
+    let dir = fuzz_dir().join("regressions/capi_calls");
+    for (name, bytes) in seeds::regressions() {
+        let path = dir.join(name);
+        if blessing() {
+            std::fs::write(&path, &bytes).unwrap();
+        }
+        assert!(
+            std::fs::read(&path).is_ok_and(|found| found == bytes),
+            "fuzz/regressions/capi_calls/{name} is not what fuzz/src/seeds.rs writes: \
+             FFLIGHT_BLESS=1 cargo test --test fuzz_replay"
+        );
+    }
+    let start = std::time::Instant::now();
     replay("regressions/capi_calls");
+    // The self-calling list must not hang the harness.
+    assert!(start.elapsed().as_secs() < 60, "{:?}", start.elapsed());
 }
 
 #[test]

@@ -562,3 +562,49 @@ pub fn seeds() -> Vec<(&'static str, Vec<u8>)> {
     }
     out
 }
+
+/// Inputs of the findings (`fuzz/regressions/capi_calls/`), replayed by `cargo test`.
+pub fn regressions() -> Vec<(&'static str, Vec<u8>)> {
+    // A list calling itself twice, nested 64 deep, runs 2^64 times (GL allows it): the
+    // harness gives each list being compiled one call (it hung the first campaign).
+    let twice = Seed::default()
+        .call("glNewList")
+        .i(1)
+        .e(GL_COMPILE)
+        .call("glCallList")
+        .i(1)
+        .call("glCallList")
+        .i(1)
+        .repeat(80, "glCallList")
+        .i(1)
+        .call("glEndList")
+        .call("glCallList")
+        .i(1);
+    // 64 lists, each calling the next, the last drawing in feedback: the deepest nesting
+    // with a draw at the bottom (in a debug build about 2 MiB of stack: 16 KiB a level and
+    // 1 MiB for the lighting kernel's frame; the replay runs on an 8 MiB thread).
+    let mut chain = feedback(lit_scene(Seed::default()), 4096, GL_3D_COLOR);
+    for list in 1..=63 {
+        chain = chain
+            .call("glNewList")
+            .i(list)
+            .e(GL_COMPILE)
+            .call("glCallList")
+            .i(list + 1)
+            .call("glEndList");
+    }
+    chain = chain
+        .call("glNewList")
+        .i(64)
+        .e(GL_COMPILE)
+        .primitive(GL_TRIANGLES, 6)
+        .call("glEndList")
+        .call("glCallList")
+        .i(1)
+        .call("glRenderMode")
+        .e(GL_RENDER);
+    vec![
+        ("list_calling_itself_twice", twice.bytes()),
+        ("list_chain_64_deep", chain.bytes()),
+    ]
+}
