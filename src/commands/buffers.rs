@@ -37,7 +37,11 @@ impl Context {
     pub fn gen_buffers(&mut self, count: i32) -> GlResult<Vec<GLuint>> {
         self.outside_begin_end()?;
         let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
-        Ok(self.buffers.generate(count))
+        let names = self.buffers.generate(count);
+        if names.len() < count {
+            return Err(GlError::OutOfMemory);
+        }
+        Ok(names)
     }
 
     /// glDeleteBuffers: every binding to a deleted object, the arrays' included, returns to 0.
@@ -175,7 +179,11 @@ impl Context {
     pub fn gen_queries(&mut self, count: i32) -> GlResult<Vec<GLuint>> {
         self.outside_begin_end()?;
         let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
-        Ok(self.queries.generate(count))
+        let names = self.queries.generate(count);
+        if names.len() < count {
+            return Err(GlError::OutOfMemory);
+        }
+        Ok(names)
     }
 
     /// glDeleteQueries: `ids` holds `count` names (fewer: a NULL pointer).
