@@ -451,6 +451,8 @@ fn op(rng: &mut Rng, shape: &mut Shape) -> Op {
         }
         2 | 3 => {
             let (pname, n, lo, hi) = rng.pick(&LIGHT_PNAMES);
+            // A material pname is no light pname (GL_INVALID_ENUM).
+            let pname = if rng.below(20) == 0 { 0x1600 } else { pname };
             let light = if rng.below(16) == 0 {
                 GL_LIGHT0 + 8
             } else {
@@ -467,6 +469,8 @@ fn op(rng: &mut Rng, shape: &mut Shape) -> Op {
         }
         4 | 5 => {
             let (pname, n, lo, hi) = rng.pick(&MATERIAL_PNAMES);
+            // A light pname is no material pname (GL_INVALID_ENUM).
+            let pname = if rng.below(20) == 0 { 0x1205 } else { pname };
             let face = rng.pick(&[GL_FRONT, GL_BACK, GL_FRONT_AND_BACK, GL_FRONT_AND_BACK]);
             let face = if rng.below(16) == 0 {
                 bad_enum(rng)
@@ -576,6 +580,18 @@ fn op(rng: &mut Rng, shape: &mut Shape) -> Op {
                 (kind, indices)
             });
             let first = rng.below(64 - count as usize) as i32;
+            // Invalid draws now and then: a negative count (GL_INVALID_VALUE), an index type
+            // or a mode GL does not know (GL_INVALID_ENUM).
+            let (mode, count, elements) = match rng.below(12) {
+                0 => (mode, -1 - rng.below(3) as i32, elements),
+                1 => (0x000F, count, elements),
+                2 => (
+                    mode,
+                    count,
+                    elements.map(|(_, indices)| (GL_FLOAT, indices)),
+                ),
+                _ => (mode, count, elements),
+            };
             Op::Arrays {
                 normals: rng.below(2) == 0,
                 colors: rng.below(2) == 0,
