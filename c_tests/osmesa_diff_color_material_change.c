@@ -13,7 +13,9 @@
  * state, and some paths flush the color without the materials: then glColorMaterial's own
  * update goes to the new property only, and the old ones never receive c. Measured: a
  * glGetFloatv between glColor and glColorMaterial, or a glLightModel before glColor, loses
- * c (the materials keep (0.2, 0.2, 0.2, 1) and (0.8, 0.8, 0.8, 1)); with nothing between,
+ * c (the materials keep (0.2, 0.2, 0.2, 1) and (0.8, 0.8, 0.8, 1)), and so does a glColor
+ * before glEnable(GL_COLOR_MATERIAL): the spec gives the tracked properties the current
+ * color at the glEnable, OSMesa only at the next glColor; with nothing between,
  * a glGetFloatv before glColor, a glGetError after it, tracking moved to GL_FRONT only, or a
  * glColor after the glEnable, OSMesa agrees with the spec (controls).
  *
