@@ -11,7 +11,7 @@ LIB := target/debug/libfflight.a
 DEMO_DIR := target/demo
 
 .PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind \
-	test-window prefixed test-cinstall test-sweep-sanitize test-valgrind-rust
+	test-window prefixed test-cinstall test-sweep-sanitize test-valgrind-rust fuzz fuzz-osmesa
 
 all: build
 
@@ -235,3 +235,29 @@ test-sweep-sanitize: build
 # binaries and why) ----
 test-valgrind-rust:
 	@tools/valgrind_rust_tests.sh
+
+# ---- fuzzing (not run by make test; cargo test replays the seeds and findings) ----
+# make fuzz: the coverage-guided target of the C ABI (fuzz/, cargo fuzz with libFuzzer, built on
+# stable with --sanitizer none) for FUZZ_TIME seconds; prints executions, coverage and
+# findings (fuzz/artifacts/capi_calls/). cargo-fuzz is installed into target/tools.
+FUZZ_TIME ?= 600
+FUZZ_TOOLS := $(CURDIR)/target/tools
+FUZZ_BIN = fuzz/target/$$(rustc -vV | sed -n 's/host: //p')/release/capi_calls
+fuzz: deps
+	@test -x $(FUZZ_TOOLS)/bin/cargo-fuzz || $(CARGO) install --locked --root $(FUZZ_TOOLS) cargo-fuzz
+	cd fuzz && PATH="$(FUZZ_TOOLS)/bin:$$PATH" $(CARGO) fuzz build --sanitizer none -O capi_calls
+	@mkdir -p fuzz/corpus/capi_calls fuzz/artifacts/capi_calls target/fuzz
+	@$(FUZZ_BIN) -dict=fuzz/gl_enums.dict -max_total_time=$(FUZZ_TIME) -max_len=256 -print_final_stats=1 \
+		-artifact_prefix=fuzz/artifacts/capi_calls/ fuzz/corpus/capi_calls fuzz/seeds/capi_calls \
+		> target/fuzz/capi_calls.log 2>&1; status=$$?; \
+	grep -E 'INITED|DONE|stat::' target/fuzz/capi_calls.log | tail -7; \
+	echo "findings: $$(ls fuzz/artifacts/capi_calls | wc -l) in fuzz/artifacts/capi_calls/ (log: target/fuzz/capi_calls.log)"; \
+	exit $$status
+
+# make fuzz-osmesa SEQUENCES=N: N random command sequences run on fflight and OSMesa in one
+# process (tests/osmesa_fuzz.rs, release build), outputs compared with the C harness's rules;
+# DRAW_USE_LLVM=0: Mesa interprets its fixed-function vertex programs instead of compiling
+# each variant with LLVM (20 times faster; cargo test runs the default).
+SEQUENCES ?= 100000
+fuzz-osmesa: deps
+	DRAW_USE_LLVM=0 FFL_OSMESA_SEQUENCES=$(SEQUENCES) $(CARGO) test --release --test osmesa_fuzz -- --nocapture fflight_agrees

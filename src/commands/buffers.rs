@@ -48,7 +48,11 @@ impl Context {
     pub fn gen_buffers(&mut self, count: i32) -> GlResult<Vec<GLuint>> {
         self.outside_begin_end()?;
         let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
-        Ok(self.buffers.generate(count))
+        let names = self.buffers.generate(count);
+        if names.len() < count {
+            return Err(GlError::OutOfMemory);
+        }
+        Ok(names)
     }
 
     /// glDeleteBuffers: every binding to a deleted object, the arrays' included, returns to 0.
@@ -333,7 +337,11 @@ impl Context {
         let count = usize::try_from(count).map_err(|_| GlError::InvalidValue)?;
         // Checked before any name is made: a NULL destination (an empty slice) changes nothing.
         let names = names.get_mut(..count).ok_or(GlError::InvalidValue)?;
-        names.copy_from_slice(&self.queries.generate(count));
+        let generated = self.queries.generate(count);
+        if generated.len() < count {
+            return Err(GlError::OutOfMemory);
+        }
+        names.copy_from_slice(&generated);
         Ok(())
     }
 

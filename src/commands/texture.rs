@@ -172,7 +172,11 @@ impl Context {
         self.outside_begin_end()?;
         let count = usize::try_from(n).map_err(|_| GlError::InvalidValue)?;
         let names = names.get_mut(..count).ok_or(GlError::InvalidValue)?;
-        names.copy_from_slice(&self.textures.generate(count));
+        let generated = self.textures.generate(count);
+        if generated.len() < count {
+            return Err(GlError::OutOfMemory);
+        }
+        names.copy_from_slice(&generated);
         Ok(())
     }
 
