@@ -11,6 +11,12 @@
 #   sweep       spawns gcc; its program is run under memcheck below, directly.
 #   header      runs cbindgen over the sources, no library code.
 #   symbols     runs nm over the built library, no library code.
+#   fuzz_replay replays the fuzzer's inputs through its harness, which reserves a 2 TiB
+#               address-space arena (MAP_NORESERVE) that memcheck cannot map; the same
+#               entry points run under memcheck through the sweep and the other binaries.
+#   osmesa_fuzz dlopens libOSMesa beside libfflight.so: memcheck reports Mesa's own leaks
+#               (contexts it never frees) and the dynamic loader's reads of RPATH strings,
+#               nothing of fflight's; fflight's side runs under memcheck in the other binaries.
 #   batch_engine, robustness
 #               14 s and 80 s of random states and sequences natively: 10 to 60 minutes
 #               under memcheck. The sweep below covers the same entry points with hostile
@@ -19,7 +25,7 @@ set -u
 cd "$(dirname "$0")/.."
 out=target/valgrind-rust
 mkdir -p "$out"
-skip=" c_programs sweep header symbols batch_engine robustness "
+skip=" c_programs sweep header symbols fuzz_replay osmesa_fuzz batch_engine robustness "
 VALGRIND="valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite"
 
 cargo test --no-run --message-format=json 2>/dev/null |
