@@ -11,9 +11,7 @@
 //! and spot exponents magnify rounding (x^128 multiplies a relative error by 128), and this
 //! path is the reference a faster single-precision engine is measured against.
 
-/// The batch engine: whole blocks of vertices transformed and lit at once.
 pub mod batch;
-/// Per-vertex lanes of f64 and their arithmetic, for the batch engine.
 pub mod lanes;
 mod prepared;
 
