@@ -22,10 +22,11 @@ use glam::{DVec3, DVec4, Vec4};
 /// The colors lighting gives one face of a vertex (§2.14.1): primary and secondary, clamped.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct FaceColors {
-    /// The primary color c_pri (with the specular term unless the color control separates it).
+    /// The primary color c_pri: lit, with the specular term unless the color control
+    /// separates it; unlit, the current color.
     pub primary: Vec4,
-    /// The secondary color c_sec: the specular term with GL_SEPARATE_SPECULAR_COLOR, else
-    /// zero; alpha is 0.
+    /// The secondary color c_sec: lit, the specular term with GL_SEPARATE_SPECULAR_COLOR, else
+    /// zero, alpha 0; unlit, the current secondary color.
     pub secondary: Vec4,
 }
 
