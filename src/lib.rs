@@ -20,10 +20,7 @@ pub mod context;
 pub mod current;
 pub mod error;
 pub mod gl;
-// Being rewritten: their doc comments are not complete yet (README, Not done).
-#[allow(missing_docs)]
 pub mod lighting;
-#[allow(missing_docs)]
 pub mod pipeline;
 pub mod state;
 pub mod threads;

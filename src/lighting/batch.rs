@@ -21,7 +21,47 @@ use crate::pipeline::block::{InputBlock, Lanes4, OutputBlock, lanes4_get};
 use crate::pipeline::vertex::DerivedState;
 use crate::state::material::MaterialMask;
 
-/// Processes `inputs` into `outputs` (pairwise; the shorter decides) with the state `derived`.
+/// Processes `inputs` into `outputs` (pairwise; the shorter decides) with the state `derived`:
+/// transformation (§2.11) and lighting (§2.14.1) of every lane, the same results as
+/// `DerivedState::process` vertex by vertex.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::lighting::{PreparedLighting, batch::process_blocks};
+/// use fflight::pipeline::block::{InputBlock, OutputBlock};
+/// use fflight::pipeline::vertex::{CurrentAttribs, DerivedState, VertexTransform};
+/// use fflight::state::{light::Light, light_model::LightModel};
+/// use fflight::state::material::{ColorMaterial, Material};
+/// use glam::{Mat4, Vec3, Vec4};
+/// let mut lights = std::array::from_fn(Light::initial);
+/// lights[0].enabled = true;
+/// let derived = DerivedState {
+///     transform: VertexTransform::new(
+///         Mat4::from_translation(Vec3::new(0.0, 0.0, -5.0)),
+///         Mat4::IDENTITY,
+///         Mat4::IDENTITY,
+///         false,
+///         false,
+///         None,
+///     ),
+///     lighting: PreparedLighting::new(
+///         true,
+///         &lights,
+///         &[Material::default(); 2],
+///         &LightModel::default(),
+///         &ColorMaterial::default(),
+///     ),
+/// };
+/// let attribs = CurrentAttribs::default();
+/// let mut input = InputBlock::with_attribs(&attribs);
+/// input.push(Vec4::new(1.0, 2.0, 3.0, 1.0), &attribs);
+/// let mut outputs = [OutputBlock::default()];
+/// process_blocks(&derived, &[input], &mut outputs);
+/// let scalar = derived.process(Vec4::new(1.0, 2.0, 3.0, 1.0), &attribs);
+/// assert_eq!(outputs[0].vertex(0), scalar);
+/// assert_eq!(scalar.eye, Vec4::new(1.0, 2.0, -2.0, 1.0));
+/// ```
 #[multiversion(targets(
     "x86_64+avx512f+avx512bw+avx512cd+avx512dq+avx512vl+avx2+fma+bmi1+bmi2+lzcnt+popcnt",
     "x86_64+avx2+fma+bmi1+bmi2+lzcnt+popcnt",

@@ -39,19 +39,49 @@ pub struct Lanes(pub [f64; LANES]);
 pub type LanesF32 = [f32; LANES];
 
 impl Lanes {
+    /// 0 in every lane.
     pub const ZERO: Lanes = Lanes([0.0; LANES]);
+    /// 1 in every lane.
     pub const ONE: Lanes = Lanes([1.0; LANES]);
 
+    /// `value` in every lane: a per-state constant (a light's color, a matrix element) made
+    /// ready to combine with per-vertex lanes.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{LANES, Lanes};
+    /// assert_eq!(Lanes::splat(0.5).0, [0.5; LANES]);
+    /// assert_eq!(Lanes::splat(1.0), Lanes::ONE);
+    /// ```
     #[inline(always)]
     pub fn splat(value: f64) -> Lanes {
         Lanes([value; LANES])
     }
 
+    /// The block's single-precision values, widened exactly to f64.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{LANES, Lanes};
+    /// let lanes = Lanes::from_f32(&[0.1; LANES]);
+    /// assert_eq!(lanes.0[0], f64::from(0.1f32));
+    /// ```
     #[inline(always)]
     pub fn from_f32(values: &LanesF32) -> Lanes {
         lanewise!(i => f64::from(values[i]))
     }
 
+    /// Each lane rounded to the nearest f32, as the scalar path's `as f32` does.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{LANES, Lanes};
+    /// let third = Lanes::splat(1.0 / 3.0).to_f32();
+    /// assert_eq!(third, [(1.0f64 / 3.0) as f32; LANES]);
+    /// ```
     #[inline(always)]
     pub fn to_f32(self) -> LanesF32 {
         let mut out = [0.0; LANES];
@@ -61,6 +91,15 @@ impl Lanes {
         out
     }
 
+    /// The square root of each lane (correctly rounded, like `f64::sqrt`).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{LANES, Lanes};
+    /// assert_eq!(Lanes::splat(9.0).sqrt(), Lanes::splat(3.0));
+    /// assert!(Lanes::splat(-1.0).sqrt().0[0].is_nan());
+    /// ```
     #[inline(always)]
     pub fn sqrt(self) -> Lanes {
         lanewise!(i => self.0[i].sqrt())
@@ -68,24 +107,58 @@ impl Lanes {
 
     /// `self` where it is greater than `floor`, else `floor`: a NaN lane becomes `floor`, as
     /// with `f64::max`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{LANES, Lanes};
+    /// let lanes = Lanes([-1.0, 2.0, f64::NAN, 0.0, 5.0, -0.5, 1.0, 3.0]);
+    /// assert_eq!(lanes.max(Lanes::ZERO).0, [0.0, 2.0, 0.0, 0.0, 5.0, 0.0, 1.0, 3.0]);
+    /// ```
     #[inline(always)]
     pub fn max(self, floor: Lanes) -> Lanes {
         lanewise!(i => self.0[i].max(floor.0[i]))
     }
 
     /// `then` in the lanes where `self > bound`, else `otherwise`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{LANES, Lanes};
+    /// let x = Lanes([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]);
+    /// let picked = x.select_gt(Lanes::splat(3.0), Lanes::ONE, Lanes::ZERO);
+    /// assert_eq!(picked.0, [0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0]);
+    /// ```
     #[inline(always)]
     pub fn select_gt(self, bound: Lanes, then: Lanes, otherwise: Lanes) -> Lanes {
         lanewise!(i => select(self.0[i] > bound.0[i], then.0[i], otherwise.0[i]))
     }
 
     /// `then` in the lanes where `self >= bound`, else `otherwise`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{LANES, Lanes};
+    /// let x = Lanes([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]);
+    /// let picked = x.select_ge(Lanes::splat(3.0), Lanes::ONE, Lanes::ZERO);
+    /// assert_eq!(picked.0, [0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 1.0]);
+    /// ```
     #[inline(always)]
     pub fn select_ge(self, bound: Lanes, then: Lanes, otherwise: Lanes) -> Lanes {
         lanewise!(i => select(self.0[i] >= bound.0[i], then.0[i], otherwise.0[i]))
     }
 
     /// 1 in the lanes that are not 0, else 0 (a NaN lane is not 0).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{LANES, Lanes};
+    /// let x = Lanes([0.0, -0.0, 2.0, f64::NAN, 0.0, 0.0, 0.0, -3.0]);
+    /// assert_eq!(x.nonzero().0, [0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 1.0]);
+    /// ```
     #[inline(always)]
     pub fn nonzero(self) -> Lanes {
         lanewise!(i => select(self.0[i] != 0.0, 1.0, 0.0))
@@ -94,6 +167,15 @@ impl Lanes {
     /// `self` to the power `exponent`, one exponent for every lane (a shininess or spot
     /// exponent, in [0, 128]). Integer exponents multiply by squaring, in the order compiler
     /// runtimes' `powi` uses, so a lane equals the scalar `powi`; others take `powf` per lane.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{LANES, Lanes};
+    /// assert_eq!(Lanes::splat(0.9).pow(10.0).0[0], 0.9f64.powi(10));
+    /// assert_eq!(Lanes::splat(0.25).pow(0.5), Lanes::splat(0.5));
+    /// assert_eq!(Lanes::ZERO.pow(0.0), Lanes::ONE); // 0^0 = 1, as the equation needs
+    /// ```
     #[inline(always)]
     pub fn pow(self, exponent: f64) -> Lanes {
         if exponent.fract() != 0.0 {
@@ -142,18 +224,32 @@ impl Neg for Lanes {
 /// A 3-vector per lane.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Vec3s {
+    /// The x components.
     pub x: Lanes,
+    /// The y components.
     pub y: Lanes,
+    /// The z components.
     pub z: Lanes,
 }
 
 impl Vec3s {
+    /// The zero vector in every lane.
     pub const ZERO: Vec3s = Vec3s {
         x: Lanes::ZERO,
         y: Lanes::ZERO,
         z: Lanes::ZERO,
     };
 
+    /// `v` in every lane: a per-state vector (a light's direction or color) for a block.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{Lanes, Vec3s};
+    /// use glam::DVec3;
+    /// let v = Vec3s::splat(DVec3::new(1.0, 2.0, 3.0));
+    /// assert_eq!(v.y, Lanes::splat(2.0));
+    /// ```
     #[inline(always)]
     pub fn splat(v: glam::DVec3) -> Vec3s {
         Vec3s {
@@ -163,11 +259,33 @@ impl Vec3s {
         }
     }
 
+    /// The dot product per lane, summed x, y, z in order like glam's `dot` (n⊙L of §2.14.1
+    /// once clamped).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{Lanes, Vec3s};
+    /// use glam::DVec3;
+    /// let a = Vec3s::splat(DVec3::new(1.0, 2.0, 3.0));
+    /// let b = Vec3s::splat(DVec3::new(4.0, -5.0, 6.0));
+    /// assert_eq!(a.dot(b), Lanes::splat(12.0));
+    /// ```
     #[inline(always)]
     pub fn dot(self, other: Vec3s) -> Lanes {
         self.x * other.x + self.y * other.y + self.z * other.z
     }
 
+    /// Each lane's vector times that lane's scalar.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{Lanes, Vec3s};
+    /// use glam::DVec3;
+    /// let v = Vec3s::splat(DVec3::new(1.0, 2.0, 3.0)).scale(Lanes::splat(2.0));
+    /// assert_eq!(v, Vec3s::splat(DVec3::new(2.0, 4.0, 6.0)));
+    /// ```
     #[inline(always)]
     pub fn scale(self, s: Lanes) -> Vec3s {
         Vec3s {
@@ -177,6 +295,16 @@ impl Vec3s {
         }
     }
 
+    /// The Euclidean length per lane (the distance ||VP_pli|| of §2.14.1 for a light offset).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{Lanes, Vec3s};
+    /// use glam::DVec3;
+    /// let v = Vec3s::splat(DVec3::new(3.0, 4.0, 12.0));
+    /// assert_eq!(v.length(), Lanes::splat(13.0));
+    /// ```
     #[inline(always)]
     pub fn length(self) -> Lanes {
         self.dot(self).sqrt()
@@ -184,6 +312,16 @@ impl Vec3s {
 
     /// The unit vector in this direction, or zero where the length is zero or not finite
     /// (glam's `normalize_or_zero`, lane by lane).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::lanes::{Lanes, Vec3s};
+    /// use glam::DVec3;
+    /// let v = DVec3::new(0.0, 3.0, 4.0);
+    /// assert_eq!(Vec3s::splat(v).normalize_or_zero(), Vec3s::splat(v.normalize_or_zero()));
+    /// assert_eq!(Vec3s::ZERO.normalize_or_zero(), Vec3s::ZERO);
+    /// ```
     #[inline(always)]
     pub fn normalize_or_zero(self) -> Vec3s {
         let recip = Lanes::ONE / self.length();
@@ -249,7 +387,16 @@ impl Neg for Vec3s {
     }
 }
 
-/// Clamps each lane to [0, 1], a NaN lane to 0 (`lighting::clamp01`'s rule).
+/// Clamps each lane to [0, 1], a NaN lane to 0 (`lighting::clamp01`'s rule): the color
+/// clamp of §2.14.8.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::lighting::lanes::clamp01;
+/// let c = clamp01([-0.5, 0.25, 1.5, f32::NAN, 0.0, 1.0, 2.0, 0.5]);
+/// assert_eq!(c, [0.0, 0.25, 1.0, 0.0, 0.0, 1.0, 1.0, 0.5]);
+/// ```
 #[inline(always)]
 pub fn clamp01(c: LanesF32) -> LanesF32 {
     let mut out = [0.0; LANES];

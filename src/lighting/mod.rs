@@ -22,7 +22,11 @@ use glam::{DVec3, DVec4, Vec4};
 /// The colors lighting gives one face of a vertex (§2.14.1): primary and secondary, clamped.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct FaceColors {
+    /// The primary color c_pri: lit, with the specular term unless the color control
+    /// separates it; unlit, the current color.
     pub primary: Vec4,
+    /// The secondary color c_sec: lit, the specular term with GL_SEPARATE_SPECULAR_COLOR, else
+    /// zero, alpha 0; unlit, the current secondary color.
     pub secondary: Vec4,
 }
 
@@ -30,7 +34,10 @@ pub struct FaceColors {
 /// front ones (§2.14.1: the front colors are used for every polygon).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct LitVertex {
+    /// The colors of front-facing primitives.
     pub front: FaceColors,
+    /// The colors of back-facing primitives (lit with the negated normal and the back material
+    /// under two-sided lighting).
     pub back: FaceColors,
 }
 
@@ -38,9 +45,14 @@ pub struct LitVertex {
 /// rescaled or normalized as enabled), and the current colors.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct VertexInput {
+    /// The vertex in eye coordinates, homogeneous (V of §2.14.1).
     pub eye: DVec4,
+    /// The eye-space normal n.
     pub normal: DVec3,
+    /// The current color: passed through when lighting is off, or the material properties
+    /// that color material tracks (§2.14.3).
     pub color: Vec4,
+    /// The current secondary color, passed through when lighting is off.
     pub secondary_color: Vec4,
 }
 
@@ -61,6 +73,35 @@ struct LightSums {
 
 impl PreparedLighting {
     /// Lights one vertex (§2.14.1), or passes its current colors through when lighting is off.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// # use fflight::lighting::{PreparedLighting, VertexInput};
+    /// # use fflight::state::{light::Light, light_model::LightModel};
+    /// # use fflight::state::material::{ColorMaterial, Material};
+    /// # use glam::{DVec3, DVec4, Vec4};
+    /// // Light 0 as initialized (white, from +z), enabled; the initial materials.
+    /// let mut lights = std::array::from_fn(Light::initial);
+    /// lights[0].enabled = true;
+    /// let lighting = PreparedLighting::new(
+    ///     true,
+    ///     &lights,
+    ///     &[Material::default(); 2],
+    ///     &LightModel::default(),
+    ///     &ColorMaterial::default(),
+    /// );
+    /// let lit = lighting.shade(&VertexInput {
+    ///     eye: DVec4::new(0.0, 0.0, -5.0, 1.0),
+    ///     normal: DVec3::Z,
+    ///     color: Vec4::ONE,
+    ///     secondary_color: Vec4::ZERO,
+    /// });
+    /// // emission 0 + ambient 0.2 * scene ambient 0.2 + diffuse 0.8 * (n.L = 1) * 1.
+    /// assert!((lit.front.primary.x - 0.84).abs() < 1e-6);
+    /// assert_eq!(lit.front.primary.w, 1.0); // the diffuse material's alpha
+    /// assert_eq!(lit.back, lit.front); // one-sided lighting
+    /// ```
     pub fn shade(&self, input: &VertexInput) -> LitVertex {
         if !self.enabled {
             let face = FaceColors {

@@ -9,11 +9,14 @@ use crate::gl::*;
 /// One assembled primitive, by indices into the vertex list.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Primitive {
+    /// A point: the index of its vertex.
     Point(usize),
     /// A segment; `reset` starts a new line stipple (GL_LINE_RESET_TOKEN in feedback): every
     /// independent segment, and the first of a strip or loop.
     Line {
+        /// Its two vertices; the second provokes.
         vertices: [usize; 2],
+        /// Whether the segment starts a new line stipple.
         reset: bool,
     },
     /// A triangle. `boundary[i]` says whether edge i (from `vertices[i]` to the next vertex)
@@ -21,9 +24,14 @@ pub enum Primitive {
     /// `edge_flags` whether the vertices' edge flags decide which boundary edges are drawn
     /// (separate triangles, quads and polygons only, §2.6.2); `reset` starts a polygon.
     Triangle {
+        /// Its three vertices, in the order that keeps the primitive's orientation; the
+        /// third provokes.
         vertices: [usize; 3],
+        /// Whether each edge is an edge of the primitive it came from.
         boundary: [bool; 3],
+        /// Whether the vertices' edge flags decide which boundary edges are drawn.
         edge_flags: bool,
+        /// Whether the triangle starts a polygon (a new line stipple in polygon mode GL_LINE).
         reset: bool,
     },
 }
@@ -41,6 +49,20 @@ fn triangle(vertices: [usize; 3], boundary: [bool; 3], edge_flags: bool, reset: 
 
 /// Calls `emit` for each primitive `mode` makes of `count` vertices, in order. Incomplete
 /// primitives are dropped (§2.6.1); an unknown mode makes nothing.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, pipeline::assembly::{Primitive, assemble}};
+/// let mut primitives = Vec::new();
+/// assemble(GL_LINE_LOOP, 3, |p| primitives.push(p));
+/// assert_eq!(primitives.len(), 3);
+/// // The loop closes from the last vertex back to the first.
+/// assert_eq!(primitives[2], Primitive::Line { vertices: [2, 0], reset: false });
+/// let mut count = 0;
+/// assemble(GL_TRIANGLES, 5, |_| count += 1);
+/// assert_eq!(count, 1); // the incomplete second triangle is dropped
+/// ```
 pub fn assemble(mode: GLenum, count: usize, mut emit: impl FnMut(Primitive)) {
     let mut assembler = Assembler::new(mode);
     for _ in 0..count {
@@ -61,20 +83,60 @@ pub struct Assembler {
 }
 
 impl Assembler {
+    /// An assembler for a draw of `mode` (glBegin's or the array draw's), no vertex pushed.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::assembly::{Assembler, Primitive}};
+    /// let assembler = Assembler::new(GL_QUADS);
+    /// assert_eq!((assembler.mode(), assembler.count()), (GL_QUADS, 0));
+    /// ```
     pub fn new(mode: GLenum) -> Assembler {
         Assembler { mode, count: 0 }
     }
 
+    /// The draw's mode.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::assembly::{Assembler, Primitive}};
+    /// assert_eq!(Assembler::new(GL_LINE_STRIP).mode(), GL_LINE_STRIP);
+    /// ```
     pub fn mode(&self) -> GLenum {
         self.mode
     }
 
     /// Vertices pushed so far.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::assembly::{Assembler, Primitive}};
+    /// let mut assembler = Assembler::new(GL_POINTS);
+    /// assembler.push(|_| {});
+    /// assembler.push(|_| {});
+    /// assert_eq!(assembler.count(), 2);
+    /// ```
     pub fn count(&self) -> usize {
         self.count
     }
 
     /// Vertex number `count()` arrives.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::assembly::{Assembler, Primitive}};
+    /// let mut assembler = Assembler::new(GL_TRIANGLES);
+    /// let mut made = Vec::new();
+    /// for _ in 0..3 {
+    ///     assembler.push(|p| made.push(p));
+    /// }
+    /// assert_eq!(made.len(), 1); // the third vertex completes the triangle
+    /// assert!(matches!(made[0], Primitive::Triangle { vertices: [0, 1, 2], .. }));
+    /// ```
     pub fn push(&mut self, mut emit: impl FnMut(Primitive)) {
         let i = self.count;
         self.count += 1;
@@ -133,6 +195,26 @@ impl Assembler {
     }
 
     /// The draw ends.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::assembly::{Assembler, Primitive}};
+    /// let mut assembler = Assembler::new(GL_POLYGON);
+    /// let mut made = Vec::new();
+    /// for _ in 0..4 {
+    ///     assembler.push(|p| made.push(p));
+    /// }
+    /// assert_eq!(made.len(), 1);
+    /// assembler.finish(|p| made.push(p)); // only now is the last triangle known to be last
+    /// let last = Primitive::Triangle {
+    ///     vertices: [2, 3, 0],
+    ///     boundary: [true, true, false],
+    ///     edge_flags: true,
+    ///     reset: false,
+    /// };
+    /// assert_eq!(made[1], last);
+    /// ```
     pub fn finish(&mut self, mut emit: impl FnMut(Primitive)) {
         let count = self.count;
         match self.mode {

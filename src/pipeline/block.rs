@@ -17,6 +17,17 @@ fn lanes4_set(lanes: &mut Lanes4, lane: usize, value: Vec4) {
     }
 }
 
+/// Lane `lane` of four-component lanes, as one vector.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::pipeline::block::{Lanes4, lanes4_get};
+/// use glam::Vec4;
+/// let mut lanes: Lanes4 = [[0.0; 8], [0.0; 8], [0.0; 8], [1.0; 8]];
+/// lanes[0][5] = 2.0;
+/// assert_eq!(lanes4_get(&lanes, 5), Vec4::new(2.0, 0.0, 0.0, 1.0));
+/// ```
 pub fn lanes4_get(lanes: &Lanes4, lane: usize) -> Vec4 {
     Vec4::new(
         lanes[0][lane],
@@ -35,11 +46,17 @@ fn splat4(value: Vec4) -> Lanes4 {
 pub struct InputBlock {
     /// How many lanes hold vertices; the others hold copies that are processed and ignored.
     pub len: usize,
+    /// Object coordinates (x, y, z, w).
     pub position: Lanes4,
+    /// The current normal (x, y, z), in object coordinates.
     pub normal: [LanesF32; 3],
+    /// The current color.
     pub color: Lanes4,
+    /// The current secondary color.
     pub secondary_color: Lanes4,
+    /// Texture unit 0's current texture coordinates.
     pub tex_coord: Lanes4,
+    /// The current edge flag.
     pub edge_flag: [bool; LANES],
 }
 
@@ -51,6 +68,18 @@ impl Default for InputBlock {
 
 impl InputBlock {
     /// An empty block whose every lane carries `attribs` (at the origin).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::block::InputBlock;
+    /// use fflight::pipeline::vertex::CurrentAttribs;
+    /// use glam::Vec4;
+    /// let attribs = CurrentAttribs { color: Vec4::new(1.0, 0.0, 0.0, 1.0), ..Default::default() };
+    /// let block = InputBlock::with_attribs(&attribs);
+    /// assert_eq!(block.len, 0);
+    /// assert_eq!(block.color[0], [1.0; 8]); // every lane's red
+    /// ```
     pub fn with_attribs(attribs: &CurrentAttribs) -> InputBlock {
         InputBlock {
             len: 0,
@@ -63,11 +92,44 @@ impl InputBlock {
         }
     }
 
+    /// Whether every lane holds a vertex: the block takes no more.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::block::InputBlock;
+    /// use fflight::pipeline::vertex::CurrentAttribs;
+    /// use glam::Vec4;
+    /// let attribs = CurrentAttribs::default();
+    /// let mut block = InputBlock::with_attribs(&attribs);
+    /// while !block.is_full() {
+    ///     block.push(Vec4::W, &attribs);
+    /// }
+    /// assert_eq!(block.len, fflight::lighting::lanes::LANES);
+    /// ```
     pub fn is_full(&self) -> bool {
         self.len == LANES
     }
 
     /// Appends a vertex at `position` with `attribs`.
+    ///
+    /// # Panics
+    ///
+    /// When the block is full.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::block::InputBlock;
+    /// use fflight::pipeline::vertex::CurrentAttribs;
+    /// use glam::Vec4;
+    /// let mut block = InputBlock::default();
+    /// let attribs = CurrentAttribs { edge_flag: false, ..Default::default() };
+    /// block.push(Vec4::new(1.0, 2.0, 3.0, 1.0), &attribs);
+    /// assert_eq!(block.len, 1);
+    /// assert_eq!(block.position[1][0], 2.0); // y of lane 0
+    /// assert!(!block.edge_flag[0]);
+    /// ```
     pub fn push(&mut self, position: Vec4, attribs: &CurrentAttribs) {
         let lane = self.len;
         // Once here, not in every store below.
@@ -81,16 +143,52 @@ impl InputBlock {
         self.len += 1;
     }
 
+    /// Sets lane `lane`'s object coordinates; the length is unchanged.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::block::InputBlock;
+    /// use fflight::pipeline::vertex::CurrentAttribs;
+    /// use glam::Vec4;
+    /// let mut block = InputBlock::default();
+    /// block.set_position(3, Vec4::new(4.0, 5.0, 6.0, 1.0));
+    /// assert_eq!(block.position[2][3], 6.0);
+    /// ```
     pub fn set_position(&mut self, lane: usize, position: Vec4) {
         lanes4_set(&mut self.position, lane, position);
     }
 
+    /// Sets lane `lane`'s normal; the length is unchanged.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::block::InputBlock;
+    /// use fflight::pipeline::vertex::CurrentAttribs;
+    /// use glam::Vec4;
+    /// let mut block = InputBlock::default();
+    /// block.set_normal(0, glam::Vec3::X);
+    /// assert_eq!([block.normal[0][0], block.normal[2][0]], [1.0, 0.0]);
+    /// ```
     pub fn set_normal(&mut self, lane: usize, normal: Vec3) {
         for (component, v) in self.normal.iter_mut().zip(normal.to_array()) {
             component[lane] = v;
         }
     }
 
+    /// Sets lane `lane`'s color; the length is unchanged.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::block::InputBlock;
+    /// use fflight::pipeline::vertex::CurrentAttribs;
+    /// use glam::Vec4;
+    /// let mut block = InputBlock::default();
+    /// block.set_color(7, Vec4::new(0.0, 0.5, 0.0, 1.0));
+    /// assert_eq!(block.color[1][7], 0.5);
+    /// ```
     pub fn set_color(&mut self, lane: usize, color: Vec4) {
         lanes4_set(&mut self.color, lane, color);
     }
@@ -99,14 +197,23 @@ impl InputBlock {
 /// The processed vertices of an `InputBlock`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct OutputBlock {
+    /// How many lanes hold vertices: the input block's `len`.
     pub len: usize,
+    /// Eye coordinates.
     pub eye: Lanes4,
+    /// Clip coordinates.
     pub clip: Lanes4,
+    /// The front face's primary color.
     pub front_primary: Lanes4,
+    /// The front face's secondary color.
     pub front_secondary: Lanes4,
+    /// The back face's primary color (the front's without two-sided lighting).
     pub back_primary: Lanes4,
+    /// The back face's secondary color.
     pub back_secondary: Lanes4,
+    /// Texture unit 0's coordinates after generation and the texture matrix.
     pub tex_coord: Lanes4,
+    /// The edge flags, passed through.
     pub edge_flag: [bool; LANES],
 }
 
@@ -129,6 +236,19 @@ impl Default for OutputBlock {
 
 impl OutputBlock {
     /// Lane `lane` as one vertex.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::block::OutputBlock;
+    /// use glam::Vec4;
+    /// let mut block = OutputBlock::default();
+    /// block.clip[3][2] = 1.0; // w of lane 2
+    /// block.edge_flag[2] = true;
+    /// let vertex = block.vertex(2);
+    /// assert_eq!(vertex.clip, Vec4::W);
+    /// assert!(vertex.edge_flag);
+    /// ```
     pub fn vertex(&self, lane: usize) -> ProcessedVertex {
         let face = |primary: &Lanes4, secondary: &Lanes4| FaceColors {
             primary: lanes4_get(primary, lane),

@@ -34,6 +34,20 @@ pub struct CapturedPrimitive {
 
 impl CapturedPrimitive {
     /// How many of `vertices` are used: 1, 2 or 3.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::capture::CapturedPrimitive};
+    /// let segment = CapturedPrimitive {
+    ///     kind: GL_LINES,
+    ///     mode: GL_LINE_STRIP,
+    ///     draw: 0,
+    ///     vertices: [4, 5, 0],
+    ///     edges: [false; 3],
+    /// };
+    /// assert_eq!(segment.vertex_count(), 2);
+    /// ```
     pub fn vertex_count(&self) -> usize {
         match self.kind {
             GL_POINTS => 1,
@@ -94,11 +108,37 @@ pub struct Capture {
 }
 
 impl Capture {
+    /// Whether capture is on: between fflCaptureBegin and fflCaptureEnd.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::capture::Capture};
+    /// let mut capture = Capture::default();
+    /// assert!(!capture.is_active());
+    /// capture.start();
+    /// assert!(capture.is_active());
+    /// ```
     pub fn is_active(&self) -> bool {
         self.active
     }
 
     /// Starts capturing, dropping what an earlier capture collected.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.capture_begin()?;
+    /// ctx.begin(GL_POINTS)?;
+    /// ctx.vertex(glam::Vec4::W);
+    /// ctx.end()?;
+    /// ctx.capture_begin()?; // starts again: the point is dropped
+    /// assert_eq!(ctx.captured().draws(), 0);
+    /// assert!(ctx.captured().vertices().is_empty());
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn start(&mut self) {
         *self = Capture {
             active: true,
@@ -107,21 +147,81 @@ impl Capture {
     }
 
     /// Stops capturing; what was collected stays until the next `start`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::capture::Capture};
+    /// let mut capture = Capture::default();
+    /// capture.start();
+    /// capture.stop();
+    /// assert!(!capture.is_active());
+    /// ```
     pub fn stop(&mut self) {
         self.active = false;
     }
 
     /// The captured vertices, transformed and lit.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// use glam::Vec4;
+    /// let mut ctx = Context::new();
+    /// ctx.capture_begin()?;
+    /// ctx.begin(GL_LINES)?;
+    /// ctx.vertex(Vec4::new(0.5, 0.0, 0.0, 1.0));
+    /// ctx.vertex(Vec4::new(0.0, 0.5, 0.0, 1.0));
+    /// ctx.end()?;
+    /// let vertices = ctx.captured().vertices();
+    /// assert_eq!(vertices.len(), 2);
+    /// assert_eq!(vertices[0].clip, Vec4::new(0.5, 0.0, 0.0, 1.0)); // identity matrices
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn vertices(&self) -> &[ProcessedVertex] {
         &self.vertices
     }
 
     /// The captured primitives, in draw order.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// use glam::Vec4;
+    /// let mut ctx = Context::new();
+    /// ctx.capture_begin()?;
+    /// ctx.begin(GL_QUADS)?;
+    /// for (x, y) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
+    ///     ctx.vertex(Vec4::new(x, y, 0.0, 1.0));
+    /// }
+    /// ctx.end()?;
+    /// let primitives = ctx.captured().primitives();
+    /// assert_eq!(primitives.len(), 2); // a quadrilateral is two triangles
+    /// assert!(primitives.iter().all(|p| p.kind == GL_TRIANGLES && p.mode == GL_QUADS));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn primitives(&self) -> &[CapturedPrimitive] {
         &self.primitives
     }
 
     /// How many draws were captured.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// let mut ctx = Context::new();
+    /// ctx.capture_begin()?;
+    /// for _ in 0..2 {
+    ///     ctx.begin(GL_POINTS)?;
+    ///     ctx.vertex(glam::Vec4::W);
+    ///     ctx.end()?;
+    /// }
+    /// assert_eq!(ctx.captured().draws(), 2);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn draws(&self) -> usize {
         self.draws
     }

@@ -30,6 +30,16 @@ fn outside(distance: f32) -> u32 {
 /// `[x, y, z, w]` is outside of, as the planes' dot products decide: each is w ± one
 /// coordinate, plus the other two coordinates times 0, which is NaN (outside) when one of them
 /// is not finite.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::pipeline::clip::view_volume_mask;
+/// assert_eq!(view_volume_mask([0.5, -0.5, 0.0, 1.0]), 0); // inside
+/// assert_eq!(view_volume_mask([2.0, 0.0, 0.0, 1.0]), 0b1); // beyond x = w
+/// assert_eq!(view_volume_mask([0.0, 0.0, -2.0, 1.0]), 0b1_0000); // beyond z = -w
+/// assert_eq!(view_volume_mask([f32::NAN, 0.0, 0.0, 1.0]), 0b11_1111);
+/// ```
 pub fn view_volume_mask([x, y, z, w]: [f32; 4]) -> u32 {
     let finite = [x.is_finite(), y.is_finite(), z.is_finite()];
     let others_finite = [
@@ -55,6 +65,17 @@ pub fn view_volume_mask([x, y, z, w]: [f32; 4]) -> u32 {
 /// Whether each lane's clip-space point is inside the view volume, `view_volume_mask(..) == 0`
 /// lane by lane: every coordinate finite and every w ± coordinate at least 0 (so not NaN).
 /// Written over whole lanes, with `&` rather than `&&`, so it compiles to vector code.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::pipeline::clip::inside_view_volume;
+/// let mut clip = [[0.0; 8], [0.0; 8], [0.0; 8], [1.0; 8]];
+/// clip[0][1] = 1.5; // lane 1 beyond x = w
+/// clip[3][2] = -1.0; // lane 2 behind the eye
+/// let inside = inside_view_volume(&clip);
+/// assert_eq!(inside, [true, false, false, true, true, true, true, true]);
+/// ```
 pub fn inside_view_volume(clip: &Lanes4) -> [bool; LANES] {
     let [x, y, z, w] = clip;
     let mut inside = [false; LANES];
@@ -79,7 +100,17 @@ pub struct ClipPlanes {
 }
 
 impl ClipPlanes {
-    /// `user`: the eye-space equations of the enabled user clip planes, in plane order.
+    /// The view volume and the user planes `user`: the eye-space equations of the enabled user
+    /// clip planes, in plane order.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::{clip::*, vertex::ProcessedVertex};
+    /// use glam::{DVec4, Vec4};
+    /// let planes = ClipPlanes::new(vec![DVec4::new(1.0, 0.0, 0.0, 0.0)]); // keeps x >= 0
+    /// assert!(planes.has_user_planes());
+    /// ```
     pub fn new(user: Vec<DVec4>) -> ClipPlanes {
         ClipPlanes { user }
     }
@@ -96,11 +127,30 @@ impl ClipPlanes {
         }
     }
 
+    /// Whether a user clip plane is enabled.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::{clip::*, vertex::ProcessedVertex};
+    /// use glam::{DVec4, Vec4};
+    /// assert!(!ClipPlanes::new(Vec::new()).has_user_planes());
+    /// ```
     pub fn has_user_planes(&self) -> bool {
         !self.user.is_empty()
     }
 
     /// One bit per user plane (from bit 6) that a point at `eye` (eye coordinates) is outside.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::{clip::*, vertex::ProcessedVertex};
+    /// use glam::{DVec4, Vec4};
+    /// let planes = ClipPlanes::new(vec![DVec4::X, DVec4::Y]); // x >= 0, y >= 0
+    /// assert_eq!(planes.user_mask(Vec4::new(-1.0, 1.0, 0.0, 1.0)), 1 << 6);
+    /// assert_eq!(planes.user_mask(Vec4::new(1.0, -1.0, 0.0, 1.0)), 1 << 7);
+    /// ```
     pub fn user_mask(&self, eye: Vec4) -> u32 {
         let eye = eye.as_dvec4();
         self.user.iter().enumerate().fold(0, |mask, (k, equation)| {
@@ -108,7 +158,22 @@ impl ClipPlanes {
         })
     }
 
-    /// One bit per plane that `v` is outside of: its `distance` is negative or NaN.
+    /// One bit per plane that `v` is outside of: its `distance` is negative or NaN (bits 0 to
+    /// 5 the view volume's, as `view_volume_mask`, then the user planes').
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::{clip::*, vertex::ProcessedVertex};
+    /// use glam::{DVec4, Vec4};
+    /// let planes = ClipPlanes::new(vec![DVec4::X]);
+    /// let v = ProcessedVertex {
+    ///     clip: Vec4::new(2.0, 0.0, 0.0, 1.0),
+    ///     eye: Vec4::new(-1.0, 0.0, 0.0, 1.0),
+    ///     ..Default::default()
+    /// };
+    /// assert_eq!(planes.outside_mask(&v), 0b1 | 1 << 6);
+    /// ```
     pub fn outside_mask(&self, v: &ProcessedVertex) -> u32 {
         let view = view_volume_mask(v.clip.to_array());
         if self.user.is_empty() {
@@ -148,12 +213,36 @@ fn interpolate(t: f32, from: &ProcessedVertex, to: &ProcessedVertex) -> Processe
     }
 }
 
-/// Whether a point is inside every plane.
+/// Whether a point is inside every plane (§2.12: a clipped point is discarded).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::pipeline::{clip::*, vertex::ProcessedVertex};
+/// use glam::{DVec4, Vec4};
+/// let at = |x: f32, y: f32| ProcessedVertex { clip: Vec4::new(x, y, 0.0, 1.0), ..Default::default() };
+/// let planes = ClipPlanes::new(Vec::new());
+/// assert!(point_visible(&planes, &at(0.5, 0.5)));
+/// assert!(!point_visible(&planes, &at(0.5, 1.5)));
+/// ```
 pub fn point_visible(planes: &ClipPlanes, v: &ProcessedVertex) -> bool {
     planes.outside_mask(v) == 0
 }
 
-/// Clips a segment: `None` when nothing of it is inside, else its visible part.
+/// Clips a segment (§2.12): `None` when nothing of it is inside, else its visible part, the
+/// attributes of a new end interpolated in clip space.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::pipeline::{clip::*, vertex::ProcessedVertex};
+/// use glam::{DVec4, Vec4};
+/// let at = |x: f32, y: f32| ProcessedVertex { clip: Vec4::new(x, y, 0.0, 1.0), ..Default::default() };
+/// let planes = ClipPlanes::new(Vec::new());
+/// let [a, b] = clip_line(&planes, &at(0.0, 0.0), &at(2.0, 0.0)).unwrap();
+/// assert_eq!((a.clip, b.clip), (Vec4::W, Vec4::new(1.0, 0.0, 0.0, 1.0))); // cut at x = w
+/// assert!(clip_line(&planes, &at(2.0, 0.0), &at(3.0, 0.0)).is_none());
+/// ```
 pub fn clip_line(
     planes: &ClipPlanes,
     a: &ProcessedVertex,
@@ -199,13 +288,35 @@ pub fn clip_line(
 /// A vertex of a clipped polygon and whether the edge that starts at it is a boundary edge.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PolygonVertex {
+    /// The vertex, original or made by the clip.
     pub vertex: ProcessedVertex,
+    /// Whether the edge from this vertex to the next is drawn as a polygon edge.
     pub boundary: bool,
 }
 
 /// Clips a triangle (Sutherland-Hodgman, plane by plane) into a convex polygon, written to
 /// `polygon` (emptied first); fewer than three vertices means nothing is visible. Returns
-/// whether the triangle crossed a plane (else `polygon` is the triangle itself).
+/// whether the triangle crossed a plane (else `polygon` stays empty: the triangle itself is
+/// wholly inside).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::pipeline::{clip::*, vertex::ProcessedVertex};
+/// use glam::{DVec4, Vec4};
+/// let at = |x: f32, y: f32| ProcessedVertex { clip: Vec4::new(x, y, 0.0, 1.0), ..Default::default() };
+/// let planes = ClipPlanes::new(Vec::new());
+/// let mut polygon = Vec::new();
+/// // One corner beyond x = w: the clip cuts it off, leaving a quadrilateral.
+/// let (a, b, c) = (at(0.0, 0.0), at(2.0, 0.0), at(0.0, 0.5));
+/// assert!(clip_triangle(&planes, [&a, &b, &c], [true; 3], &mut polygon));
+/// assert_eq!(polygon.len(), 4);
+/// assert!(polygon.iter().all(|p| p.vertex.clip.x <= 1.0));
+/// // Wholly inside: not clipped.
+/// let b = at(0.5, 0.0);
+/// assert!(!clip_triangle(&planes, [&a, &b, &c], [true; 3], &mut polygon));
+/// assert!(polygon.is_empty());
+/// ```
 pub fn clip_triangle(
     planes: &ClipPlanes,
     triangle: [&ProcessedVertex; 3],

@@ -69,10 +69,15 @@ fn encode_points<const Z: bool, const W: bool, const COLOR: bool, const TEXTURE:
 /// Which values a fed-back vertex carries (glFeedbackBuffer's `type`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FeedbackLayout {
+    /// The type: GL_2D, GL_3D, GL_3D_COLOR, GL_3D_COLOR_TEXTURE or GL_4D_COLOR_TEXTURE.
     pub kind: GLenum,
+    /// Whether a vertex carries its window z.
     pub z: bool,
+    /// Whether a vertex carries its clip w.
     pub w: bool,
+    /// Whether a vertex carries its color (4 values).
     pub color: bool,
+    /// Whether a vertex carries its texture coordinates (4 values).
     pub texture: bool,
 }
 
@@ -100,6 +105,19 @@ impl FeedbackLayout {
         n
     }
 
+    /// The layout of glFeedbackBuffer's `type` (§5.3, table 5.2); GL_INVALID_ENUM for
+    /// another value.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let layout = FeedbackLayout::of(GL_3D_COLOR)?;
+    /// assert!(layout.z && layout.color && !layout.w && !layout.texture);
+    /// assert_eq!(FeedbackLayout::of(GL_RGBA), Err(fflight::GlError::InvalidEnum));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn of(kind: GLenum) -> GlResult<FeedbackLayout> {
         let (z, w, color, texture) = match kind {
             GL_2D => (false, false, false, false),
@@ -122,8 +140,11 @@ impl FeedbackLayout {
 /// One vertex as feedback reports it: window coordinates (w = clip w), color, texture coordinate.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FeedbackVertex {
+    /// Window x, y, z, and clip w.
     pub window: Vec4,
+    /// The color the vertex takes after facing and flat shading.
     pub color: Vec4,
+    /// Texture unit 0's coordinates.
     pub tex_coord: Vec4,
 }
 
@@ -132,7 +153,9 @@ pub struct FeedbackVertex {
 /// context keeps until glRenderMode hands it over (Rust callers).
 #[derive(Debug)]
 pub enum FeedbackStorage {
+    /// Values the context keeps.
     Kept(Vec<f32>),
+    /// The application's glFeedbackBuffer memory.
     Application(crate::capi::ApplicationFloats),
 }
 
@@ -145,11 +168,15 @@ impl Default for FeedbackStorage {
 /// The feedback buffer as the context keeps it: at most `capacity` values, then overflow.
 #[derive(Debug, Default)]
 pub struct FeedbackBuffer {
+    /// glFeedbackBuffer's layout; `None` until one is given (then only tokens are written).
     pub layout: Option<FeedbackLayout>,
+    /// glFeedbackBuffer's size: the most values a pass writes.
     pub capacity: usize,
+    /// Where the values go.
     pub storage: FeedbackStorage,
     /// How many values this feedback pass wrote.
     pub written: usize,
+    /// Whether a value did not fit: glRenderMode then returns -1.
     pub overflowed: bool,
     /// Set when the line stipple restarts: the next segment is a GL_LINE_RESET_TOKEN.
     pub line_reset_pending: bool,
@@ -176,6 +203,22 @@ impl Clone for FeedbackBuffer {
 
 impl FeedbackBuffer {
     /// Starts a new feedback pass: the buffer empties.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let mut buffer = FeedbackBuffer {
+    ///     layout: Some(FeedbackLayout::of(GL_2D)?),
+    ///     capacity: 16,
+    ///     ..FeedbackBuffer::default()
+    /// };
+    /// buffer.pass_through(1.0);
+    /// buffer.restart();
+    /// assert_eq!((buffer.written, buffer.take_kept()), (0, vec![]));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn restart(&mut self) {
         if let FeedbackStorage::Kept(values) = &mut self.storage {
             values.clear();
@@ -185,11 +228,45 @@ impl FeedbackBuffer {
         self.line_reset_pending = false;
     }
 
+    /// Appends one value, unless the buffer is full.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let mut buffer = FeedbackBuffer {
+    ///     layout: Some(FeedbackLayout::of(GL_2D)?),
+    ///     capacity: 1,
+    ///     ..FeedbackBuffer::default()
+    /// };
+    /// buffer.value(3.0);
+    /// buffer.value(4.0); // overflows
+    /// assert_eq!(buffer.take_kept(), [3.0]);
+    /// assert!(buffer.overflowed);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn value(&mut self, value: f32) {
         self.values_of(&[value]);
     }
 
     /// Appends `values`, as many as fit; the rest overflow.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let mut buffer = FeedbackBuffer {
+    ///     layout: Some(FeedbackLayout::of(GL_2D)?),
+    ///     capacity: 2,
+    ///     ..FeedbackBuffer::default()
+    /// };
+    /// buffer.values_of(&[1.0, 2.0, 3.0]);
+    /// assert_eq!(buffer.take_kept(), [1.0, 2.0]);
+    /// assert_eq!(buffer.result(), -1);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn values_of(&mut self, values: &[f32]) {
         let room = self.capacity - self.written;
         let fitting = &values[..values.len().min(room)];
@@ -205,21 +282,97 @@ impl FeedbackBuffer {
         }
     }
 
+    /// Appends a token, as a float (§5.3).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let mut buffer = FeedbackBuffer {
+    ///     layout: Some(FeedbackLayout::of(GL_2D)?),
+    ///     capacity: 16,
+    ///     ..FeedbackBuffer::default()
+    /// };
+    /// buffer.token(GL_BITMAP_TOKEN);
+    /// assert_eq!(buffer.take_kept(), [GL_BITMAP_TOKEN as f32]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn token(&mut self, token: GLenum) {
         self.value(token as f32);
     }
 
+    /// glPassThrough: GL_PASS_THROUGH_TOKEN and `value` (§5.3).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let mut buffer = FeedbackBuffer {
+    ///     layout: Some(FeedbackLayout::of(GL_2D)?),
+    ///     capacity: 16,
+    ///     ..FeedbackBuffer::default()
+    /// };
+    /// buffer.pass_through(7.0);
+    /// assert_eq!(buffer.take_kept(), [GL_PASS_THROUGH_TOKEN as f32, 7.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn pass_through(&mut self, value: f32) {
         self.token(GL_PASS_THROUGH_TOKEN);
         self.value(value);
     }
 
     /// The line stipple restarts (a new independent segment, strip or polygon outline).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let mut buffer = FeedbackBuffer {
+    ///     layout: Some(FeedbackLayout::of(GL_2D)?),
+    ///     capacity: 16,
+    ///     ..FeedbackBuffer::default()
+    /// };
+    /// let vertex = FeedbackVertex {
+    ///     window: Vec4::new(10.0, 20.0, 0.5, 1.0),
+    ///     color: Vec4::ONE,
+    ///     tex_coord: Vec4::W,
+    /// };
+    /// buffer.reset_line_stipple();
+    /// buffer.line(&[vertex, vertex]);
+    /// buffer.line(&[vertex, vertex]);
+    /// let values = buffer.take_kept();
+    /// assert_eq!((values[0], values[5]), (GL_LINE_RESET_TOKEN as f32, GL_LINE_TOKEN as f32));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn reset_line_stipple(&mut self) {
         self.line_reset_pending = true;
     }
 
-    /// A segment: GL_LINE_RESET_TOKEN after a stipple restart, else GL_LINE_TOKEN.
+    /// A segment: GL_LINE_RESET_TOKEN after a stipple restart, else GL_LINE_TOKEN, then its
+    /// two ends.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let mut buffer = FeedbackBuffer {
+    ///     layout: Some(FeedbackLayout::of(GL_2D)?),
+    ///     capacity: 16,
+    ///     ..FeedbackBuffer::default()
+    /// };
+    /// let vertex = FeedbackVertex {
+    ///     window: Vec4::new(10.0, 20.0, 0.5, 1.0),
+    ///     color: Vec4::ONE,
+    ///     tex_coord: Vec4::W,
+    /// };
+    /// buffer.line(&[vertex, vertex]);
+    /// assert_eq!(buffer.take_kept(), [GL_LINE_TOKEN as f32, 10.0, 20.0, 10.0, 20.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn line(&mut self, ends: &[FeedbackVertex; 2]) {
         let reset = std::mem::take(&mut self.line_reset_pending);
         self.token(if reset {
@@ -232,6 +385,26 @@ impl FeedbackBuffer {
     }
 
     /// A point: GL_POINT_TOKEN and its vertex.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let mut buffer = FeedbackBuffer {
+    ///     layout: Some(FeedbackLayout::of(GL_2D)?),
+    ///     capacity: 16,
+    ///     ..FeedbackBuffer::default()
+    /// };
+    /// let vertex = FeedbackVertex {
+    ///     window: Vec4::new(10.0, 20.0, 0.5, 1.0),
+    ///     color: Vec4::ONE,
+    ///     tex_coord: Vec4::W,
+    /// };
+    /// buffer.point(&vertex);
+    /// assert_eq!(buffer.take_kept(), [GL_POINT_TOKEN as f32, 10.0, 20.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn point(&mut self, vertex: &FeedbackVertex) {
         self.token_and_vertex(Some(GL_POINT_TOKEN), vertex);
     }
@@ -239,6 +412,26 @@ impl FeedbackBuffer {
     /// The points of a block in the lanes that are `visible`: window coordinates (w = clip
     /// w), colors and texture coordinates, one component per array. The block's values are
     /// laid out with code chosen once for the layout, then written with one copy.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let mut buffer = FeedbackBuffer {
+    ///     layout: Some(FeedbackLayout::of(GL_2D)?),
+    ///     capacity: 16,
+    ///     ..FeedbackBuffer::default()
+    /// };
+    /// let mut window = [[0.0; 8]; 4];
+    /// window[0] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]; // x
+    /// let mut visible = [false; 8];
+    /// visible[2] = true;
+    /// let zero = [[0.0; 8]; 4];
+    /// buffer.points(&visible, &window, &zero, &zero);
+    /// assert_eq!(buffer.take_kept(), [GL_POINT_TOKEN as f32, 2.0, 0.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn points(
         &mut self,
         visible: &[bool; LANES],
@@ -272,6 +465,28 @@ impl FeedbackBuffer {
         self.values_of(&values[..len]);
     }
 
+    /// A vertex's values in the layout, without a token (a polygon's vertices follow its
+    /// count).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let mut buffer = FeedbackBuffer {
+    ///     layout: Some(FeedbackLayout::of(GL_3D_COLOR)?),
+    ///     capacity: 16,
+    ///     ..FeedbackBuffer::default()
+    /// };
+    /// let vertex = FeedbackVertex {
+    ///     window: Vec4::new(10.0, 20.0, 0.5, 1.0),
+    ///     color: Vec4::ONE,
+    ///     tex_coord: Vec4::W,
+    /// };
+    /// buffer.vertex(&vertex);
+    /// assert_eq!(buffer.take_kept(), [10.0, 20.0, 0.5, 1.0, 1.0, 1.0, 1.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn vertex(&mut self, vertex: &FeedbackVertex) {
         self.token_and_vertex(None, vertex);
     }
@@ -294,6 +509,28 @@ impl FeedbackBuffer {
     }
 
     /// A triangle: GL_POLYGON_TOKEN, the count 3 and the three vertices, with one copy.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let mut buffer = FeedbackBuffer {
+    ///     layout: Some(FeedbackLayout::of(GL_2D)?),
+    ///     capacity: 16,
+    ///     ..FeedbackBuffer::default()
+    /// };
+    /// let vertex = FeedbackVertex {
+    ///     window: Vec4::new(10.0, 20.0, 0.5, 1.0),
+    ///     color: Vec4::ONE,
+    ///     tex_coord: Vec4::W,
+    /// };
+    /// buffer.triangle(&[vertex; 3]);
+    /// let values = buffer.take_kept();
+    /// assert_eq!(values.len(), 2 + 3 * 2);
+    /// assert_eq!(values[..2], [GL_POLYGON_TOKEN as f32, 3.0]);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn triangle(&mut self, corners: &[FeedbackVertex; 3]) {
         let Some(layout) = self.layout else {
             self.token(GL_POLYGON_TOKEN);
@@ -311,6 +548,23 @@ impl FeedbackBuffer {
 
     /// The values of a pass kept by the context (none for the application's memory, which
     /// holds them already).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let mut buffer = FeedbackBuffer {
+    ///     layout: Some(FeedbackLayout::of(GL_2D)?),
+    ///     capacity: 16,
+    ///     ..FeedbackBuffer::default()
+    /// };
+    /// buffer.value(1.0);
+    /// assert_eq!(buffer.take_kept(), [1.0]);
+    /// assert!(buffer.take_kept().is_empty()); // taken
+    /// assert_eq!(buffer.written, 1); // still counted for glRenderMode
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn take_kept(&mut self) -> Vec<f32> {
         match &mut self.storage {
             FeedbackStorage::Kept(values) => std::mem::take(values),
@@ -319,6 +573,21 @@ impl FeedbackBuffer {
     }
 
     /// glRenderMode's return value when feedback ends: the value count, or -1 on overflow.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, pipeline::feedback::*};
+    /// use glam::Vec4;
+    /// let mut buffer = FeedbackBuffer {
+    ///     layout: Some(FeedbackLayout::of(GL_2D)?),
+    ///     capacity: 16,
+    ///     ..FeedbackBuffer::default()
+    /// };
+    /// buffer.pass_through(0.0);
+    /// assert_eq!(buffer.result(), 2);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
     pub fn result(&self) -> i32 {
         if self.overflowed {
             -1

@@ -103,6 +103,32 @@ pub struct ArrayFetch<'a> {
 impl<'a> ArrayFetch<'a> {
     /// `arrays[kind]`: the enabled arrays' state and bytes, which start with element `base`
     /// and hold every element the draw reads (checked by the caller).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// # use fflight::{gl::*, pipeline::fetch::ArrayFetch};
+    /// # use fflight::state::arrays::{ARRAY_KINDS, ClientArray};
+    /// // A vertex array of two floats per element: (1, 2), (3, 4), (5, 6).
+    /// let vertex_array = ClientArray {
+    ///     enabled: true,
+    ///     size: 2,
+    ///     component_type: GL_FLOAT,
+    ///     stride: 0,
+    ///     address: 0,
+    ///     buffer: 0,
+    /// };
+    /// let bytes: Vec<u8> = [1.0f32, 2.0, 3.0, 4.0, 5.0, 6.0]
+    ///     .iter()
+    ///     .flat_map(|v| v.to_ne_bytes())
+    ///     .collect();
+    /// let mut arrays = [None; ARRAY_KINDS];
+    /// arrays[0] = Some((&vertex_array, &bytes[..])); // ALL_KINDS[0] is the vertex array
+    /// let fetch = ArrayFetch::new(0, arrays);
+    /// let mut block = fflight::pipeline::block::InputBlock::default();
+    /// fetch.fill(&mut block, &[2]);
+    /// assert_eq!(block.len, 1);
+    /// ```
     pub fn new(
         base: usize,
         arrays: [Option<(&ClientArray, &'a [u8])>; ARRAY_KINDS],
@@ -119,6 +145,38 @@ impl<'a> ArrayFetch<'a> {
 
     /// Puts elements `indices` (at most a block's lanes) into `block`'s lanes; attributes
     /// without an enabled array keep what the block holds.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// # use fflight::{gl::*, pipeline::fetch::ArrayFetch};
+    /// # use fflight::state::arrays::{ARRAY_KINDS, ClientArray};
+    /// // A vertex array of two floats per element: (1, 2), (3, 4), (5, 6).
+    /// let vertex_array = ClientArray {
+    ///     enabled: true,
+    ///     size: 2,
+    ///     component_type: GL_FLOAT,
+    ///     stride: 0,
+    ///     address: 0,
+    ///     buffer: 0,
+    /// };
+    /// let bytes: Vec<u8> = [1.0f32, 2.0, 3.0, 4.0, 5.0, 6.0]
+    ///     .iter()
+    ///     .flat_map(|v| v.to_ne_bytes())
+    ///     .collect();
+    /// let mut arrays = [None; ARRAY_KINDS];
+    /// arrays[0] = Some((&vertex_array, &bytes[..])); // ALL_KINDS[0] is the vertex array
+    /// # use fflight::pipeline::block::{InputBlock, lanes4_get};
+    /// # use glam::Vec4;
+    /// let fetch = ArrayFetch::new(0, arrays);
+    /// let mut block = InputBlock::default();
+    /// fetch.fill(&mut block, &[1, 0]);
+    /// assert_eq!(block.len, 2);
+    /// // Missing components are (z, w) = (0, 1) (§2.8).
+    /// assert_eq!(lanes4_get(&block.position, 0), Vec4::new(3.0, 4.0, 0.0, 1.0));
+    /// assert_eq!(lanes4_get(&block.position, 1), Vec4::new(1.0, 2.0, 0.0, 1.0));
+    /// assert_eq!(lanes4_get(&block.color, 0), Vec4::ONE); // no color array: kept
+    /// ```
     pub fn fill(&self, block: &mut InputBlock, indices: &[usize]) {
         let mut offsets = [0; crate::lighting::lanes::LANES];
         block.len = indices.len();

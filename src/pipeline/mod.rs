@@ -47,6 +47,14 @@ impl VertexWindow {
     }
 
     /// Vertex `index` of the draw: 0 or one of the last four put.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::{VertexWindow, vertex::ProcessedVertex};
+    /// let window = VertexWindow::default();
+    /// assert_eq!(window.get(0), &ProcessedVertex::default());
+    /// ```
     pub fn get(&self, index: usize) -> &ProcessedVertex {
         if index == 0 {
             &self.first

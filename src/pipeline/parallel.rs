@@ -72,6 +72,43 @@ impl Drop for CloseOnDrop<'_> {
 /// Lights `blocks` blocks with `helpers` helper threads besides the calling thread and gives
 /// them to `stream` in order on the calling thread. `fill(block, input)` puts block `block`'s
 /// vertices into `input` (which starts as `template`, and keeps what `fill` leaves there).
+///
+/// # Examples
+///
+/// ```
+/// # use fflight::lighting::PreparedLighting;
+/// # use fflight::pipeline::vertex::{DerivedState, VertexTransform};
+/// # use fflight::state::{light::Light, light_model::LightModel};
+/// # use fflight::state::material::{ColorMaterial, Material};
+/// # use glam::Mat4;
+/// // Identity matrices, lighting off.
+/// let derived = DerivedState {
+///     transform: VertexTransform::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY, false, false, None),
+///     lighting: PreparedLighting::new(
+///         false,
+///         &std::array::from_fn(Light::initial),
+///         &[Material::default(); 2],
+///         &LightModel::default(),
+///         &ColorMaterial::default(),
+///     ),
+/// };
+/// use fflight::pipeline::{block::InputBlock, parallel::light_in_order};
+/// use glam::Vec4;
+/// let mut xs = Vec::new();
+/// light_in_order(
+///     &derived,
+///     &InputBlock::default(),
+///     100,
+///     1,
+///     |block, input| {
+///         input.len = 1;
+///         input.set_position(0, Vec4::new(block as f32, 0.0, 0.0, 1.0));
+///     },
+///     |output| xs.push(output.vertex(0).clip.x),
+/// );
+/// // Every block, in order, whichever thread lit it.
+/// assert_eq!(xs, (0..100).map(|b| b as f32).collect::<Vec<_>>());
+/// ```
 pub fn light_in_order(
     derived: &DerivedState,
     template: &InputBlock,

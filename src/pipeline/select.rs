@@ -10,11 +10,13 @@ pub const MAX_NAME_STACK_DEPTH: usize = 64;
 pub struct Selection {
     /// Whether glSelectBuffer was called: glRenderMode(GL_SELECT) needs it.
     pub buffer_given: bool,
+    /// glSelectBuffer's size: the most values the hit records take.
     pub capacity: usize,
     /// The address glSelectBuffer was given: only the C layer writes through it.
     pub address: usize,
     /// The hit records written since selection mode was entered (never more than `capacity`).
     pub records: Vec<u32>,
+    /// Whether a value did not fit: glRenderMode then returns -1.
     pub overflowed: bool,
     /// Hit records written, whole or cut short by the end of the buffer.
     pub hits: i32,
@@ -27,6 +29,16 @@ pub struct Selection {
 
 impl Selection {
     /// A primitive hit with a vertex at window depth `z`: updates the current hit's range.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::select::{Selection, depth_to_uint};
+    /// let mut selection = Selection { capacity: 16, ..Selection::default() };
+    /// selection.hit(0.5);
+    /// selection.hit(0.25);
+    /// assert_eq!(selection.hit_depths, Some((0.25, 0.5)));
+    /// ```
     pub fn hit(&mut self, z: f32) {
         let (min, max) = self.hit_depths.get_or_insert((z, z));
         *min = min.min(z);
@@ -34,7 +46,20 @@ impl Selection {
     }
 
     /// Writes a hit record if there was a hit since the last one: the number of names, the
-    /// minimum and maximum depth, then the names, bottom first. Clears the hit flag.
+    /// minimum and maximum depth, then the names, bottom first. Clears the hit flag (§5.2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::select::{Selection, depth_to_uint};
+    /// let mut selection = Selection { capacity: 16, ..Selection::default() };
+    /// selection.names = vec![7];
+    /// selection.hit(0.0);
+    /// selection.write_hit_record();
+    /// selection.write_hit_record(); // no hit since: nothing
+    /// assert_eq!(selection.records, [1, 0, 0, 7]);
+    /// assert_eq!(selection.hits, 1);
+    /// ```
     pub fn write_hit_record(&mut self) {
         let Some((min, max)) = self.hit_depths.take() else {
             return;
@@ -57,6 +82,17 @@ impl Selection {
     }
 
     /// Starts a new selection pass: no records, no hit, an empty name stack.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::select::{Selection, depth_to_uint};
+    /// let mut selection = Selection { capacity: 16, ..Selection::default() };
+    /// selection.names = vec![1, 2];
+    /// selection.hit(0.5);
+    /// selection.restart();
+    /// assert!(selection.names.is_empty() && selection.hit_depths.is_none());
+    /// ```
     pub fn restart(&mut self) {
         self.records.clear();
         self.overflowed = false;
@@ -66,6 +102,19 @@ impl Selection {
     }
 
     /// glRenderMode's return value when selection ends: the hit count, or -1 on overflow.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::select::{Selection, depth_to_uint};
+    /// let mut selection = Selection { capacity: 3, ..Selection::default() };
+    /// selection.hit(1.0);
+    /// selection.write_hit_record(); // 3 values: fits
+    /// assert_eq!(selection.result(), 1);
+    /// selection.hit(1.0);
+    /// selection.write_hit_record(); // no room left
+    /// assert_eq!(selection.result(), -1);
+    /// ```
     pub fn result(&self) -> i32 {
         if self.overflowed { -1 } else { self.hits }
     }
@@ -74,6 +123,15 @@ impl Selection {
 /// A window depth in [0, 1] as a hit record holds it: multiplied by 2^32 - 1 and rounded to
 /// the nearest unsigned integer (§5.2). Depths a hair outside [0, 1] (float rounding of a
 /// vertex on a clip plane) are clamped.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::pipeline::select::depth_to_uint;
+/// assert_eq!(depth_to_uint(0.0), 0);
+/// assert_eq!(depth_to_uint(1.0), u32::MAX);
+/// assert_eq!(depth_to_uint(1.0000001), u32::MAX);
+/// ```
 pub fn depth_to_uint(z: f32) -> u32 {
     (f64::from(z.clamp(0.0, 1.0)) * f64::from(u32::MAX)).round() as u32
 }

@@ -44,6 +44,15 @@ impl Clone for VertexCache {
 
 impl VertexCache {
     /// Empties the cache for a new draw.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::vertex_cache::VertexCache;
+    /// let mut cache = VertexCache::default();
+    /// cache.start_draw(); // allocates the slots once, then only marks them empty
+    /// cache.start_draw();
+    /// ```
     pub fn start_draw(&mut self) {
         if self.slots.is_empty() {
             self.slots = vec![
@@ -66,6 +75,56 @@ impl VertexCache {
 
     /// Takes the next index of the draw; sends the pending ones on, lit, through `send` when
     /// the window is full or the index's slot is still needed by it.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// # use fflight::lighting::PreparedLighting;
+    /// # use fflight::pipeline::vertex::{DerivedState, VertexTransform};
+    /// # use fflight::state::{light::Light, light_model::LightModel};
+    /// # use fflight::state::material::{ColorMaterial, Material};
+    /// # use glam::Mat4;
+    /// // Identity matrices, lighting off.
+    /// let derived = DerivedState {
+    ///     transform: VertexTransform::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY, false, false, None),
+    ///     lighting: PreparedLighting::new(
+    ///         false,
+    ///         &std::array::from_fn(Light::initial),
+    ///         &[Material::default(); 2],
+    ///         &LightModel::default(),
+    ///         &ColorMaterial::default(),
+    ///     ),
+    /// };
+    /// # use fflight::{gl::*, pipeline::fetch::ArrayFetch};
+    /// # use fflight::state::arrays::{ARRAY_KINDS, ClientArray};
+    /// // A vertex array of two floats per element: (1, 2), (3, 4), (5, 6).
+    /// let vertex_array = ClientArray {
+    ///     enabled: true,
+    ///     size: 2,
+    ///     component_type: GL_FLOAT,
+    ///     stride: 0,
+    ///     address: 0,
+    ///     buffer: 0,
+    /// };
+    /// let bytes: Vec<u8> = [1.0f32, 2.0, 3.0, 4.0, 5.0, 6.0]
+    ///     .iter()
+    ///     .flat_map(|v| v.to_ne_bytes())
+    ///     .collect();
+    /// let mut arrays = [None; ARRAY_KINDS];
+    /// arrays[0] = Some((&vertex_array, &bytes[..])); // ALL_KINDS[0] is the vertex array
+    /// use fflight::pipeline::{block::InputBlock, vertex_cache::VertexCache};
+    /// let fetch = ArrayFetch::new(0, arrays);
+    /// let mut input = InputBlock::default();
+    /// let mut cache = VertexCache::default();
+    /// cache.start_draw();
+    /// let mut xs = Vec::new();
+    /// for index in [0, 2, 0] {
+    ///     cache.push(index, (&derived, &fetch, &mut input), |v| xs.push(v.clip.x));
+    /// }
+    /// assert!(xs.is_empty()); // the window is not full: nothing sent yet
+    /// cache.flush(&derived, &fetch, &mut input, |v| xs.push(v.clip.x));
+    /// assert_eq!(xs, [1.0, 5.0, 1.0]);
+    /// ```
     pub fn push(
         &mut self,
         index: usize,
@@ -91,6 +150,53 @@ impl VertexCache {
 
     /// Lights the misses of the window, a block at a time, and sends its indices' vertices
     /// on in order.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// # use fflight::lighting::PreparedLighting;
+    /// # use fflight::pipeline::vertex::{DerivedState, VertexTransform};
+    /// # use fflight::state::{light::Light, light_model::LightModel};
+    /// # use fflight::state::material::{ColorMaterial, Material};
+    /// # use glam::Mat4;
+    /// // Identity matrices, lighting off.
+    /// let derived = DerivedState {
+    ///     transform: VertexTransform::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY, false, false, None),
+    ///     lighting: PreparedLighting::new(
+    ///         false,
+    ///         &std::array::from_fn(Light::initial),
+    ///         &[Material::default(); 2],
+    ///         &LightModel::default(),
+    ///         &ColorMaterial::default(),
+    ///     ),
+    /// };
+    /// # use fflight::{gl::*, pipeline::fetch::ArrayFetch};
+    /// # use fflight::state::arrays::{ARRAY_KINDS, ClientArray};
+    /// // A vertex array of two floats per element: (1, 2), (3, 4), (5, 6).
+    /// let vertex_array = ClientArray {
+    ///     enabled: true,
+    ///     size: 2,
+    ///     component_type: GL_FLOAT,
+    ///     stride: 0,
+    ///     address: 0,
+    ///     buffer: 0,
+    /// };
+    /// let bytes: Vec<u8> = [1.0f32, 2.0, 3.0, 4.0, 5.0, 6.0]
+    ///     .iter()
+    ///     .flat_map(|v| v.to_ne_bytes())
+    ///     .collect();
+    /// let mut arrays = [None; ARRAY_KINDS];
+    /// arrays[0] = Some((&vertex_array, &bytes[..])); // ALL_KINDS[0] is the vertex array
+    /// use fflight::pipeline::{block::InputBlock, vertex_cache::VertexCache};
+    /// let fetch = ArrayFetch::new(0, arrays);
+    /// let mut input = InputBlock::default();
+    /// let mut cache = VertexCache::default();
+    /// cache.start_draw();
+    /// cache.push(1, (&derived, &fetch, &mut input), |_| {});
+    /// let mut sent = Vec::new();
+    /// cache.flush(&derived, &fetch, &mut input, |v| sent.push(v.clip.y));
+    /// assert_eq!(sent, [4.0]);
+    /// ```
     pub fn flush(
         &mut self,
         derived: &DerivedState,
