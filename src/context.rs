@@ -320,8 +320,8 @@ impl Context {
     }
 
     fn build_derived(&self) -> DerivedState {
-        DerivedState {
-            transform: VertexTransform::new(
+        DerivedState::new(
+            VertexTransform::new(
                 *self.matrices.modelview.top(),
                 *self.matrices.projection.top(),
                 *self.matrices.texture[0].top(),
@@ -329,14 +329,14 @@ impl Context {
                 self.enables.rescale_normal,
                 self.textures.units[0].tex_gen.prepared(),
             ),
-            lighting: PreparedLighting::new(
+            PreparedLighting::new(
                 self.enables.lighting,
                 &self.lights,
                 &self.materials,
                 &self.light_model,
                 &self.color_material,
             ),
-        }
+        )
     }
 
     /// Applies the current color to the properties color material tracks (§2.14.3).

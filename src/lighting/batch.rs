@@ -36,8 +36,8 @@ use crate::state::material::MaterialMask;
 /// use glam::{Mat4, Vec3, Vec4};
 /// let mut lights = std::array::from_fn(Light::initial);
 /// lights[0].enabled = true;
-/// let derived = DerivedState {
-///     transform: VertexTransform::new(
+/// let derived = DerivedState::new(
+///     VertexTransform::new(
 ///         Mat4::from_translation(Vec3::new(0.0, 0.0, -5.0)),
 ///         Mat4::IDENTITY,
 ///         Mat4::IDENTITY,
@@ -45,14 +45,14 @@ use crate::state::material::MaterialMask;
 ///         false,
 ///         None,
 ///     ),
-///     lighting: PreparedLighting::new(
+///     PreparedLighting::new(
 ///         true,
 ///         &lights,
 ///         &[Material::default(); 2],
 ///         &LightModel::default(),
 ///         &ColorMaterial::default(),
 ///     ),
-/// };
+/// );
 /// let attribs = CurrentAttribs::default();
 /// let mut input = InputBlock::with_attribs(&attribs);
 /// input.push(Vec4::new(1.0, 2.0, 3.0, 1.0), &attribs);
@@ -62,12 +62,28 @@ use crate::state::material::MaterialMask;
 /// assert_eq!(outputs[0].vertex(0), scalar);
 /// assert_eq!(scalar.eye, Vec4::new(1.0, 2.0, -2.0, 1.0));
 /// ```
+pub fn process_blocks(derived: &DerivedState, inputs: &[InputBlock], outputs: &mut [OutputBlock]) {
+    let served = derived
+        .fast
+        .as_ref()
+        .is_some_and(|fast| super::fast::process_blocks(fast, derived, inputs, outputs));
+    if !served {
+        process_blocks_exact(derived, inputs, outputs);
+    }
+}
+
+/// `process_blocks` in double precision throughout: equal to the scalar path
+/// (`DerivedState::process`) to the last bit for ordinary inputs.
 #[multiversion(targets(
     "x86_64+avx512f+avx512bw+avx512cd+avx512dq+avx512vl+avx2+fma+bmi1+bmi2+lzcnt+popcnt",
     "x86_64+avx2+fma+bmi1+bmi2+lzcnt+popcnt",
     "aarch64+neon"
 ))]
-pub fn process_blocks(derived: &DerivedState, inputs: &[InputBlock], outputs: &mut [OutputBlock]) {
+pub fn process_blocks_exact(
+    derived: &DerivedState,
+    inputs: &[InputBlock],
+    outputs: &mut [OutputBlock],
+) {
     let lighting = &derived.lighting;
     // Plain loops, no closures: a closure would be compiled apart from this function and
     // without its target features.

@@ -12,6 +12,7 @@
 //! path is the reference a faster single-precision engine is measured against.
 
 pub mod batch;
+pub mod fast;
 pub mod lanes;
 mod prepared;
 

@@ -265,4 +265,32 @@ impl OutputBlock {
             edge_flag: self.edge_flag[lane],
         }
     }
+
+    /// Replaces lane `lane` with `vertex`; the length is unchanged.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::block::OutputBlock;
+    /// use fflight::pipeline::vertex::ProcessedVertex;
+    /// use glam::Vec4;
+    /// let mut block = OutputBlock::default();
+    /// let vertex = ProcessedVertex { clip: Vec4::new(1.0, 2.0, 3.0, 4.0), ..Default::default() };
+    /// block.set_vertex(5, &vertex);
+    /// assert_eq!(block.vertex(5), vertex);
+    /// ```
+    pub fn set_vertex(&mut self, lane: usize, vertex: &ProcessedVertex) {
+        lanes4_set(&mut self.eye, lane, vertex.eye);
+        lanes4_set(&mut self.clip, lane, vertex.clip);
+        lanes4_set(&mut self.front_primary, lane, vertex.colors.front.primary);
+        lanes4_set(
+            &mut self.front_secondary,
+            lane,
+            vertex.colors.front.secondary,
+        );
+        lanes4_set(&mut self.back_primary, lane, vertex.colors.back.primary);
+        lanes4_set(&mut self.back_secondary, lane, vertex.colors.back.secondary);
+        lanes4_set(&mut self.tex_coord, lane, vertex.tex_coord);
+        self.edge_flag[lane] = vertex.edge_flag;
+    }
 }

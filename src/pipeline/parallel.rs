@@ -82,16 +82,16 @@ impl Drop for CloseOnDrop<'_> {
 /// # use fflight::state::material::{ColorMaterial, Material};
 /// # use glam::Mat4;
 /// // Identity matrices, lighting off.
-/// let derived = DerivedState {
-///     transform: VertexTransform::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY, false, false, None),
-///     lighting: PreparedLighting::new(
+/// let derived = DerivedState::new(
+///     VertexTransform::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY, false, false, None),
+///     PreparedLighting::new(
 ///         false,
 ///         &std::array::from_fn(Light::initial),
 ///         &[Material::default(); 2],
 ///         &LightModel::default(),
 ///         &ColorMaterial::default(),
 ///     ),
-/// };
+/// );
 /// use fflight::pipeline::{block::InputBlock, parallel::light_in_order};
 /// use glam::Vec4;
 /// let mut xs = Vec::new();

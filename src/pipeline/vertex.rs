@@ -3,6 +3,7 @@
 
 use glam::{DMat3, DMat4, DVec3, DVec4, Mat4, Vec3, Vec4};
 
+use crate::lighting::fast::FastState;
 use crate::lighting::{LitVertex, PreparedLighting, VertexInput};
 use crate::state::texgen::{GenInput, PreparedTexGen};
 use crate::state::texture::MAX_TEXTURE_UNITS;
@@ -222,9 +223,43 @@ pub struct DerivedState {
     pub transform: VertexTransform,
     /// The lighting constants.
     pub lighting: PreparedLighting,
+    /// The same constants in single precision, for the fast engine; `None` where it cannot
+    /// serve the state (`FastState::new`).
+    pub fast: Option<FastState>,
 }
 
 impl DerivedState {
+    /// The derived state of `transform` and `lighting`, with the fast engine's constants.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// # use fflight::lighting::PreparedLighting;
+    /// # use fflight::pipeline::vertex::{DerivedState, VertexTransform};
+    /// # use fflight::state::{light::Light, light_model::LightModel};
+    /// # use fflight::state::material::{ColorMaterial, Material};
+    /// # use glam::Mat4;
+    /// let derived = DerivedState::new(
+    ///     VertexTransform::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY, false, false, None),
+    ///     PreparedLighting::new(
+    ///         false,
+    ///         &std::array::from_fn(Light::initial),
+    ///         &[Material::default(); 2],
+    ///         &LightModel::default(),
+    ///         &ColorMaterial::default(),
+    ///     ),
+    /// );
+    /// assert!(derived.fast.is_some());
+    /// ```
+    pub fn new(transform: VertexTransform, lighting: PreparedLighting) -> DerivedState {
+        let fast = FastState::new(&transform, &lighting);
+        DerivedState {
+            transform,
+            lighting,
+            fast,
+        }
+    }
+
     /// Transforms (§2.11) and lights (§2.14.1) one vertex given in object coordinates: the
     /// scalar reference path.
     ///
@@ -237,16 +272,16 @@ impl DerivedState {
     /// # use fflight::state::material::{ColorMaterial, Material};
     /// # use glam::Mat4;
     /// // Identity matrices, lighting off.
-    /// let derived = DerivedState {
-    ///     transform: VertexTransform::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY, false, false, None),
-    ///     lighting: PreparedLighting::new(
+    /// let derived = DerivedState::new(
+    ///     VertexTransform::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY, false, false, None),
+    ///     PreparedLighting::new(
     ///         false,
     ///         &std::array::from_fn(Light::initial),
     ///         &[Material::default(); 2],
     ///         &LightModel::default(),
     ///         &ColorMaterial::default(),
     ///     ),
-    /// };
+    /// );
     /// use fflight::pipeline::vertex::CurrentAttribs;
     /// use glam::Vec4;
     /// let attribs = CurrentAttribs { color: Vec4::new(2.0, 0.5, 0.0, 1.0), ..Default::default() };

@@ -85,16 +85,16 @@ impl VertexCache {
     /// # use fflight::state::material::{ColorMaterial, Material};
     /// # use glam::Mat4;
     /// // Identity matrices, lighting off.
-    /// let derived = DerivedState {
-    ///     transform: VertexTransform::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY, false, false, None),
-    ///     lighting: PreparedLighting::new(
+    /// let derived = DerivedState::new(
+    ///     VertexTransform::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY, false, false, None),
+    ///     PreparedLighting::new(
     ///         false,
     ///         &std::array::from_fn(Light::initial),
     ///         &[Material::default(); 2],
     ///         &LightModel::default(),
     ///         &ColorMaterial::default(),
     ///     ),
-    /// };
+    /// );
     /// # use fflight::{gl::*, pipeline::fetch::ArrayFetch};
     /// # use fflight::state::arrays::{ARRAY_KINDS, ClientArray};
     /// // A vertex array of two floats per element: (1, 2), (3, 4), (5, 6).
@@ -160,16 +160,16 @@ impl VertexCache {
     /// # use fflight::state::material::{ColorMaterial, Material};
     /// # use glam::Mat4;
     /// // Identity matrices, lighting off.
-    /// let derived = DerivedState {
-    ///     transform: VertexTransform::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY, false, false, None),
-    ///     lighting: PreparedLighting::new(
+    /// let derived = DerivedState::new(
+    ///     VertexTransform::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY, false, false, None),
+    ///     PreparedLighting::new(
     ///         false,
     ///         &std::array::from_fn(Light::initial),
     ///         &[Material::default(); 2],
     ///         &LightModel::default(),
     ///         &ColorMaterial::default(),
     ///     ),
-    /// };
+    /// );
     /// # use fflight::{gl::*, pipeline::fetch::ArrayFetch};
     /// # use fflight::state::arrays::{ARRAY_KINDS, ClientArray};
     /// // A vertex array of two floats per element: (1, 2), (3, 4), (5, 6).

@@ -1,0 +1,445 @@
+// The kernel's code, compiled once per instruction set: `x86.rs` includes it into a module
+// whose `with_features!` gives every function that set's target features, so the intrinsics
+// the wrappers call inline into each function (no closures here: they would not inherit
+// the features).
+
+use super::{D2, F, Mask, V3};
+use crate::lighting::fast::{
+    DISCONTINUITY, DOT_ERROR, ERROR_BUDGET, FastFace, FastLight, FastState, ILL_CONDITIONED,
+    SHORTEST_HALF_SQUARED,
+};
+use crate::pipeline::block::{InputBlock, Lanes4, OutputBlock};
+use crate::state::material::MaterialMask;
+
+with_features! {
+/// One block: the lanes refused (one bit each), whose outputs the caller replaces.
+#[inline]
+pub(super) fn process(state: &FastState, input: &InputBlock, out: &mut OutputBlock) -> u8 {
+    let refused = match (state.lit, state.two_side, state.local_viewer) {
+        (false, _, _) => block::<false, false, false>(state, input, out),
+        (true, false, false) => block::<true, false, false>(state, input, out),
+        (true, false, true) => block::<true, false, true>(state, input, out),
+        (true, true, false) => block::<true, true, false>(state, input, out),
+        (true, true, true) => block::<true, true, true>(state, input, out),
+    };
+    refused & ((1u32 << input.len) - 1) as u8
+}
+}
+
+with_features! {
+#[inline]
+fn load4(lanes: &Lanes4) -> [F; 4] {
+    [F::load(&lanes[0]), F::load(&lanes[1]), F::load(&lanes[2]), F::load(&lanes[3])]
+}
+}
+
+with_features! {
+#[inline]
+fn store4(values: [F; 4], lanes: &mut Lanes4) {
+    for k in 0..4 {
+        values[k].store(&mut lanes[k]);
+    }
+}
+}
+
+with_features! {
+#[inline]
+fn clamp4(c: [F; 4]) -> [F; 4] {
+    [c[0].clamp01(), c[1].clamp01(), c[2].clamp01(), c[3].clamp01()]
+}
+}
+
+with_features! {
+/// `m * v` in double precision with `m` in columns, in glam's order of operations (no fused
+/// multiply-add): the scalar path's results to the last bit. Stores them rounded to single
+/// precision in `rounded` and returns them in double precision, low and high four lanes.
+#[inline]
+fn transform4_exact(m: &[[f64; 4]; 4], v: [D2; 4], rounded: &mut Lanes4) -> [D2; 4] {
+    let mut out = [v[0]; 4];
+    for (row, o) in out.iter_mut().enumerate() {
+        let mut sum = v[0].scale(m[0][row]);
+        sum = sum.add(v[1].scale(m[1][row]));
+        sum = sum.add(v[2].scale(m[2][row]));
+        *o = sum.add(v[3].scale(m[3][row]));
+        o.to_f32().store(&mut rounded[row]);
+    }
+    out
+}
+}
+
+with_features! {
+/// `m * v` with `m` in columns, in glam's order of operations (no fused multiply-add), as
+/// the scalar path computes texture coordinates.
+#[inline]
+fn transform4(m: &[[f32; 4]; 4], v: [F; 4]) -> [F; 4] {
+    let mut out = [F::zero(); 4];
+    for (row, o) in out.iter_mut().enumerate() {
+        let xy = F::splat(m[0][row]) * v[0] + F::splat(m[1][row]) * v[1];
+        *o = (xy + F::splat(m[2][row]) * v[2]) + F::splat(m[3][row]) * v[3];
+    }
+    out
+}
+}
+
+with_features! {
+#[inline]
+fn transform3(m: &[[f32; 3]; 3], v: V3) -> V3 {
+    let mut out = [F::zero(); 3];
+    for (r, o) in out.iter_mut().enumerate() {
+        let z = F::splat(m[2][r]) * v.z;
+        *o = F::splat(m[0][r]).mul_add(v.x, F::splat(m[1][r]).mul_add(v.y, z));
+    }
+    V3 {
+        x: out[0],
+        y: out[1],
+        z: out[2],
+    }
+}
+}
+
+/// The sums of light colors weighted by the light-dependent factors, per face, and the
+/// lanes' sensitivity to the rounding of their dot products.
+struct Sums {
+    ambient: V3,
+    diffuse: [V3; 2],
+    specular: [V3; 2],
+    /// Through the terms both faces share (diffuse, spot).
+    sensitivity: F,
+    /// Through each face's specular terms.
+    specular_sensitivity: [F; 2],
+    refused: Mask,
+}
+
+/// What every light reads of the vertex.
+struct Vertex {
+    position: V3,
+    /// |position|: with a light's, the scale of the rounding of the direction to the light.
+    position_length: F,
+    normal: V3,
+    eye_direction: V3,
+}
+
+with_features! {
+#[inline]
+fn block<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
+    state: &FastState,
+    input: &InputBlock,
+    out: &mut OutputBlock,
+) -> u8 {
+    let object = load4(&input.position);
+    let mut refused = Mask::none();
+    for c in &object {
+        refused = refused | c.out_of_range();
+    }
+    let object = [D2::from_f32(object[0]), D2::from_f32(object[1]), D2::from_f32(object[2]), D2::from_f32(object[3])];
+    let eye = transform4_exact(&state.modelview, object, &mut out.eye);
+    let mut clip = [[0.0; 8]; 4];
+    transform4_exact(&state.projection, eye, &mut clip);
+    out.clip = clip;
+    let eye = load4(&out.eye);
+    if state.texture_is_identity {
+        out.tex_coord = input.tex_coord;
+    } else {
+        store4(transform4(&state.texture, load4(&input.tex_coord)), &mut out.tex_coord);
+    }
+    out.edge_flag = input.edge_flag;
+    out.len = input.len;
+    let color = load4(&input.color);
+    if !LIT {
+        let secondary = load4(&input.secondary_color);
+        for c in color.iter().chain(&secondary) {
+            refused = refused | c.out_of_range();
+        }
+        store4(clamp4(color), &mut out.front_primary);
+        store4(clamp4(secondary), &mut out.front_secondary);
+        out.back_primary = out.front_primary;
+        out.back_secondary = out.front_secondary;
+        return refused.bits();
+    }
+    if state.tracks_color {
+        for c in &color {
+            refused = refused | c.outside_unit();
+        }
+    }
+
+    let normal = V3 {
+        x: F::load(&input.normal[0]),
+        y: F::load(&input.normal[1]),
+        z: F::load(&input.normal[2]),
+    };
+    for c in [normal.x, normal.y, normal.z] {
+        refused = refused | c.out_of_range();
+    }
+    let mut normal = transform3(&state.normal_matrix, normal);
+    let length_squared = normal.dot(normal);
+    // The dot products' rounding grows with the normal's length.
+    let mut normal_scale = F::splat(1.0);
+    if state.normalize {
+        refused = refused | length_squared.lt(F::splat(1e-12));
+        normal = normal.scale(F::splat(1.0).div(length_squared.sqrt()));
+    } else {
+        let scale = state.normal_rescale.unwrap_or(1.0);
+        normal = normal.scale(F::splat(scale));
+        normal_scale = (length_squared.sqrt() * F::splat(scale)).max(normal_scale);
+    }
+
+    let w = eye[3];
+    let mut position = V3 {
+        x: eye[0],
+        y: eye[1],
+        z: eye[2],
+    };
+    if !w.all_eq(1.0) {
+        // §2.14.1 reads V as homogeneous: divided by w unless w is 0.
+        let divisor = w.abs().gt(F::zero()).select(w, F::splat(1.0));
+        let inverse = F::splat(1.0).div(divisor);
+        position = position.scale(inverse);
+        refused = refused | divisor.abs().lt(F::splat(1.0 / 1024.0));
+    }
+    let position_length = position.dot(position).sqrt();
+    let eye_direction = if LOCAL_VIEWER {
+        refused = refused | position_length.lt(F::splat(1e-6));
+        position.scale(-F::splat(1.0).div(position_length))
+    } else {
+        V3::splat([0.0, 0.0, 1.0])
+    };
+    let vertex = Vertex {
+        position,
+        position_length,
+        normal,
+        eye_direction,
+    };
+    let mut sums = Sums {
+        ambient: V3::zero(),
+        diffuse: [V3::zero(); 2],
+        specular: [V3::zero(); 2],
+        sensitivity: F::zero(),
+        specular_sensitivity: [F::zero(); 2],
+        refused,
+    };
+    for light in state.lights() {
+        macro_rules! add {
+            ($positional:literal, $spot:literal, $attenuation:literal) => {
+                add_light::<$positional, $spot, $attenuation, TWO_SIDE, LOCAL_VIEWER>(
+                    light, &state.faces, &vertex, &mut sums,
+                )
+            };
+        }
+        match (light.positional, light.spot, light.attenuation) {
+            (false, false, _) => add!(false, false, false),
+            (false, true, _) => add!(false, true, false),
+            (true, false, false) => add!(true, false, false),
+            (true, false, true) => add!(true, false, true),
+            (true, true, false) => add!(true, true, false),
+            (true, true, true) => add!(true, true, true),
+        }
+    }
+    let mut refused = sums.refused;
+    let face_count = if TWO_SIDE { 2 } else { 1 };
+    for face in 0..face_count {
+        // The lowest color channel before clamping: a face whose every channel exceeds 1 by
+        // more than its error clamps to the same colors, however large the error.
+        let mut lowest = F::splat(f32::INFINITY);
+        let (primary, secondary) =
+            face_colors(state, face, &sums, &color, &mut refused, &mut lowest);
+        let (primary_out, secondary_out) = if face == 0 {
+            (&mut out.front_primary, &mut out.front_secondary)
+        } else {
+            (&mut out.back_primary, &mut out.back_secondary)
+        };
+        store4(primary, primary_out);
+        store4(secondary, secondary_out);
+        let sensitivity = sums.sensitivity + sums.specular_sensitivity[face];
+        let error = sensitivity * normal_scale * F::splat(DOT_ERROR);
+        let saturated = lowest.gt(F::splat(1.0) + error);
+        refused = refused | (error.exceeds(F::splat(ERROR_BUDGET)) & !saturated);
+    }
+    if !TWO_SIDE {
+        out.back_primary = out.front_primary;
+        out.back_secondary = out.front_secondary;
+    }
+    refused.bits()
+}
+}
+
+with_features! {
+/// Light `light`'s terms, added to `sums` (§2.14.1), with their sensitivities and refusals.
+#[inline]
+fn add_light<
+    const POSITIONAL: bool,
+    const SPOT: bool,
+    const ATTENUATION: bool,
+    const TWO_SIDE: bool,
+    const LOCAL_VIEWER: bool,
+>(
+    light: &FastLight,
+    faces: &[FastFace; 2],
+    vertex: &Vertex,
+    sums: &mut Sums,
+) {
+    let one = F::splat(1.0);
+    let (to_light, attenuation) = if POSITIONAL {
+        let offset = V3::splat(light.position) - vertex.position;
+        let distance_squared = offset.dot(offset);
+        let inverse_distance = reciprocal_sqrt(distance_squared);
+        let distance = distance_squared * inverse_distance;
+        // The direction carries the positions' rounding divided by the distance.
+        let scale = vertex.position_length + F::splat(light.position_length);
+        sums.refused = sums.refused | (distance * F::splat(ILL_CONDITIONED)).lt(scale)
+            | distance.lt(F::splat(1e-6));
+        let to_light = offset.scale(inverse_distance);
+        let attenuation = if ATTENUATION {
+            let [k0, k1, k2] = light.attenuation_factors;
+            let denominator = distance.mul_add(distance.mul_add(F::splat(k2), F::splat(k1)), F::splat(k0));
+            sums.refused = sums.refused | denominator.lt(F::splat(1.0 / 1024.0));
+            Some(reciprocal(denominator))
+        } else {
+            None
+        };
+        (to_light, attenuation)
+    } else {
+        (V3::splat(light.position), None)
+    };
+    let spot = if SPOT {
+        let cos_angle = -to_light.dot(V3::splat(light.spot_direction));
+        let cutoff = F::splat(light.spot_cos_cutoff);
+        sums.refused = sums.refused | (cos_angle - cutoff).abs().lt(F::splat(DISCONTINUITY));
+        let inside = cos_angle.ge(cutoff);
+        let (slope, power) = cos_angle.max(F::zero()).power_and_slope(light.spot_exponent);
+        let slope = match attenuation {
+            Some(a) => a * slope,
+            None => slope,
+        };
+        Some((inside.keep(power), inside.keep(slope)))
+    } else {
+        None
+    };
+    // The spot factor's rounding reaches the light's whole contribution: its slope times
+    // the light's terms, bounded after the faces below.
+    let (spot, spot_slope) = match spot {
+        Some((power, slope)) => (Some(power), Some(slope)),
+        None => (None, None),
+    };
+    let weight = match (attenuation, spot) {
+        (Some(a), Some(s)) => a * s,
+        (Some(a), None) => a,
+        (None, Some(s)) => s,
+        (None, None) => one,
+    };
+    sums.ambient = sums.ambient.add_weighted(weight, light.ambient);
+
+    let normal = vertex.normal;
+    let n_dot_l = normal.dot(to_light);
+    let n_dot_h = if POSITIONAL || LOCAL_VIEWER {
+        let half = to_light + vertex.eye_direction;
+        let length_squared = half.dot(half);
+        sums.refused = sums.refused | length_squared.lt(F::splat(SHORTEST_HALF_SQUARED));
+        normal.dot(half) * reciprocal_sqrt(length_squared)
+    } else {
+        normal.dot(V3::splat(light.infinite_half))
+    };
+    // Whether the specular term counts changes at n·L = 0.
+    sums.refused = sums.refused | n_dot_l.abs().lt(F::splat(DISCONTINUITY));
+    sums.sensitivity = weight.mul_add(F::splat(light.diffuse_sensitivity), sums.sensitivity);
+    let face_count = if TWO_SIDE { 2 } else { 1 };
+    let mut largest_power = F::zero();
+    for (face, fast) in faces.iter().enumerate().take(face_count) {
+        // The back face sees the negated normal.
+        let (n_dot_l, n_dot_h) = if face == 0 {
+            (n_dot_l, n_dot_h)
+        } else {
+            (-n_dot_l, -n_dot_h)
+        };
+        let diffuse = n_dot_l.max(F::zero());
+        let lit = diffuse.gt(F::zero());
+        let (slope, power) = n_dot_h.max(F::zero()).power_and_slope(fast.shininess);
+        sums.diffuse[face] = sums.diffuse[face].add_weighted(weight * diffuse, light.diffuse);
+        sums.specular[face] = sums.specular[face].add_weighted(lit.keep(weight * power), light.specular);
+        sums.specular_sensitivity[face] = lit.keep(weight * slope).mul_add(
+            F::splat(light.specular_sensitivity[face]),
+            sums.specular_sensitivity[face],
+        );
+        if SPOT {
+            largest_power = largest_power.max(lit.keep(power));
+        }
+    }
+    if let Some(slope) = spot_slope {
+        let [ambient, diffuse, specular] = light.term_bounds;
+        let terms = F::splat(diffuse).mul_add(
+            n_dot_l.abs(),
+            F::splat(specular).mul_add(largest_power, F::splat(ambient)),
+        );
+        sums.sensitivity = slope.mul_add(terms, sums.sensitivity);
+    }
+}
+}
+
+with_features! {
+/// The material property `mask` of `face` per lane: the vertex color where color material
+/// tracks it (§2.14.3), else the material's.
+#[inline]
+fn material_property(face: &FastFace, mask: MaterialMask, value: [f32; 4], color: &[F; 4]) -> [F; 4] {
+    if face.tracked.contains(mask) {
+        *color
+    } else {
+        [F::splat(value[0]), F::splat(value[1]), F::splat(value[2]), F::splat(value[3])]
+    }
+}
+}
+
+with_features! {
+#[inline]
+fn rgb(c: &[F; 4]) -> V3 {
+    V3 {
+        x: c[0],
+        y: c[1],
+        z: c[2],
+    }
+}
+}
+
+with_features! {
+/// `c` clamped, with `alpha`. Lanes where `c` is NaN (an overflow times 0: a power of a
+/// normal longer than 1 beyond single precision's range) are added to `refused`, and
+/// `lowest` keeps the lowest channel before clamping.
+#[inline]
+fn clamp_rgba(c: V3, alpha: F, refused: &mut Mask, lowest: &mut F) -> [F; 4] {
+    *refused = *refused | c.x.is_nan() | c.y.is_nan() | c.z.is_nan();
+    *lowest = lowest.min(c.x).min(c.y).min(c.z);
+    [c.x.clamp01(), c.y.clamp01(), c.z.clamp01(), alpha.clamp01()]
+}
+}
+
+with_features! {
+/// One face's primary and secondary colors from the light sums (§2.14.1).
+#[inline]
+fn face_colors(
+    state: &FastState,
+    face: usize,
+    sums: &Sums,
+    color: &[F; 4],
+    refused: &mut Mask,
+    lowest: &mut F,
+) -> ([F; 4], [F; 4]) {
+    let fast = &state.faces[face];
+    let diffuse = material_property(fast, MaterialMask::DIFFUSE, fast.diffuse, color);
+    let ambient = material_property(fast, MaterialMask::AMBIENT, fast.ambient, color);
+    let emission = material_property(fast, MaterialMask::EMISSION, fast.emission, color);
+    let specular = material_property(fast, MaterialMask::SPECULAR, fast.specular, color);
+    let unlit = rgb(&emission) + rgb(&ambient).mul(V3::splat(state.scene_ambient) + sums.ambient);
+    let lit_diffuse = unlit + rgb(&diffuse).mul(sums.diffuse[face]);
+    let lit_specular = rgb(&specular).mul(sums.specular[face]);
+    if state.separate_specular {
+        (
+            clamp_rgba(lit_diffuse, diffuse[3], refused, lowest),
+            clamp_rgba(lit_specular, F::zero(), refused, lowest),
+        )
+    } else {
+        (
+            clamp_rgba(lit_diffuse + lit_specular, diffuse[3], refused, lowest),
+            [F::zero(); 4],
+        )
+    }
+}
+}
+

@@ -1,0 +1,408 @@
+//! The fast engine: transformation (§2.11) and lighting (§2.14.1) of blocks in single
+//! precision, with explicit SIMD code (AVX2 with FMA, and the same code compiled for AVX-512's
+//! 32 registers), chosen at run time. `process_blocks` uses it wherever it meets the double
+//! precision reference's tolerance and the CPU has the instructions; elsewhere the
+//! double-precision engine (`batch::process_blocks_exact`) runs.
+//!
+//! Single precision is not accurate enough everywhere: a power x^e multiplies the error of its
+//! base by e·x^(e-1) (up to 128 near a highlight of shininess 128), and a weight above 1 (an
+//! attenuation of a near light) magnifies the error of its dot product. So the kernel keeps,
+//! per lane, the *sensitivity* of its colors to the rounding of its dot products, and bounds
+//! the error by it: a lane whose colors could move by more than `ERROR_BUDGET`, whose
+//! geometry is ill-conditioned (a vertex nearly on a positional light, a half vector between
+//! almost opposite directions, a normal too short to normalize, a dot product at a
+//! discontinuity of the equation: n·L at 0, a spot cosine at its cutoff), or whose inputs lie
+//! outside single precision's comfortable range is *refused* and lit again by the scalar
+//! double-precision path. States the bound does not hold for (fractional exponents, negative
+//! colors that could cancel, huge matrices) never reach the kernel.
+
+#[cfg(target_arch = "x86_64")]
+mod x86;
+
+use glam::{DVec3, Mat3, Mat4, Vec4};
+
+use super::{PreparedFace, PreparedLight, PreparedLighting};
+use crate::pipeline::block::{InputBlock, OutputBlock, lanes4_get};
+use crate::pipeline::vertex::{CurrentAttribs, DerivedState, VertexTransform};
+use crate::state::light::MAX_LIGHTS;
+use crate::state::material::MaterialMask;
+
+/// How far single precision may move a color from the double-precision result through the
+/// rounding of its dot products. The tests hold the engine to 1e-5 of the reference; the rest
+/// of single precision's error (products and sums of non-negative terms, each within a few
+/// units in the last place of a result no larger than 1 once clamped) stays below 1e-6.
+const ERROR_BUDGET: f32 = 5e-6;
+
+/// A bound on the rounding error of a dot product of unit vectors in the kernel, with margin
+/// over the largest measured (`tests/fast_engine.rs` measures it on random states).
+const DOT_ERROR: f32 = 1e-7;
+
+/// Inputs beyond this magnitude (and NaN) are refused: their squares and products stay far
+/// from overflow. Matrices and light positions beyond it keep the whole state out.
+const SINGLE_RANGE: f32 = 1_048_576.0;
+
+/// A vertex nearer a positional light than 1/64 of their distances from the eye is refused:
+/// the direction to the light carries the eye position's rounding divided by the distance.
+/// Likewise a half vector shorter than 1/16 before normalization.
+const ILL_CONDITIONED: f32 = 64.0;
+const SHORTEST_HALF_SQUARED: f32 = 1.0 / 256.0;
+
+/// A dot product this close to a discontinuity of the equation (n·L at 0, a spot cosine at
+/// its cutoff) may fall on the other side of it than in double precision: refused.
+const DISCONTINUITY: f32 = 1e-6;
+
+/// One enabled light in single precision, with its sensitivities.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct FastLight {
+    positional: bool,
+    spot: bool,
+    attenuation: bool,
+    ambient: [f32; 3],
+    diffuse: [f32; 3],
+    specular: [f32; 3],
+    /// Positional: the eye-space position. Directional: the unit direction to the light.
+    position: [f32; 3],
+    /// |position|, for the conditioning of the direction to a positional light.
+    position_length: f32,
+    infinite_half: [f32; 3],
+    spot_direction: [f32; 3],
+    spot_cos_cutoff: f32,
+    spot_exponent: u32,
+    /// (constant, linear, quadratic).
+    attenuation_factors: [f32; 3],
+    /// By how much an error in n·L moves a color: the largest diffuse product of the faces.
+    diffuse_sensitivity: f32,
+    /// The largest ambient, diffuse and specular products of the light's colors with the
+    /// faces' materials: what its terms weigh at most, per unit of n·L and (n·h)^s.
+    term_bounds: [f32; 3],
+    /// The shininess of each face times the largest specular product.
+    specular_sensitivity: [f32; 2],
+}
+
+/// One face's material in single precision.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct FastFace {
+    ambient: [f32; 4],
+    diffuse: [f32; 4],
+    specular: [f32; 4],
+    emission: [f32; 4],
+    tracked: MaterialMask,
+    shininess: u32,
+}
+
+/// The single-precision constants of a state the fast engine serves: what `DerivedState`
+/// holds, rounded to f32 once per state change.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FastState {
+    /// In double precision: eye and clip coordinates are computed as the scalar path computes
+    /// them, to the last bit, so clipping and window coordinates do not depend on the engine.
+    modelview: [[f64; 4]; 4],
+    projection: [[f64; 4]; 4],
+    texture: [[f32; 4]; 4],
+    texture_is_identity: bool,
+    tex_gen: bool,
+    normal_matrix: [[f32; 3]; 3],
+    normalize: bool,
+    normal_rescale: Option<f32>,
+    lit: bool,
+    two_side: bool,
+    local_viewer: bool,
+    separate_specular: bool,
+    lights: [FastLight; MAX_LIGHTS],
+    light_count: usize,
+    faces: [FastFace; 2],
+    scene_ambient: [f32; 3],
+    /// Some material property follows the vertex color: lanes whose color leaves [0, 1] are
+    /// refused (the sensitivities assume it).
+    tracks_color: bool,
+}
+
+fn rgb(v: DVec3) -> [f32; 3] {
+    v.as_vec3().to_array()
+}
+
+fn in_range(values: &[f32]) -> bool {
+    values.iter().all(|v| v.abs() <= SINGLE_RANGE)
+}
+
+fn integer_exponent(e: f64) -> Option<u32> {
+    (e.fract() == 0.0 && (0.0..=128.0).contains(&e)).then_some(e as u32)
+}
+
+impl FastState {
+    /// The constants for `transform` and `lighting`, or `None` where single precision cannot
+    /// be bounded: fractional or out-of-range exponents, negative colors, matrices or light
+    /// positions beyond 2^20.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::lighting::fast::FastState;
+    /// use fflight::Context;
+    /// let mut ctx = Context::new();
+    /// let derived = ctx.derived();
+    /// assert!(FastState::new(&derived.transform, &derived.lighting).is_some());
+    /// ```
+    pub fn new(transform: &VertexTransform, lighting: &PreparedLighting) -> Option<FastState> {
+        let modelview = transform.modelview.as_mat4();
+        let projection = transform.projection.as_mat4();
+        let normal_matrix = transform.normal_matrix.as_mat3();
+        let matrices_ok = in_range(&modelview.to_cols_array())
+            && in_range(&projection.to_cols_array())
+            && in_range(&transform.texture.to_cols_array())
+            && in_range(&normal_matrix.to_cols_array())
+            && transform
+                .normal_rescale
+                .is_none_or(|s| in_range(&[s as f32]));
+        if !matrices_ok {
+            return None;
+        }
+        let mut state = FastState {
+            modelview: transform.modelview.to_cols_array_2d(),
+            projection: transform.projection.to_cols_array_2d(),
+            texture: transform.texture.to_cols_array_2d(),
+            texture_is_identity: transform.texture == Mat4::IDENTITY,
+            tex_gen: transform.tex_gen.is_some(),
+            normal_matrix: Mat3::to_cols_array_2d(&normal_matrix),
+            normalize: transform.normalize,
+            normal_rescale: transform.normal_rescale.map(|s| s as f32),
+            lit: lighting.enabled,
+            two_side: lighting.two_side,
+            local_viewer: lighting.local_viewer,
+            separate_specular: lighting.separate_specular,
+            lights: [FastLight::default(); MAX_LIGHTS],
+            light_count: 0,
+            faces: [FastFace::default(); 2],
+            scene_ambient: rgb(lighting.scene_ambient),
+            tracks_color: false,
+        };
+        if !lighting.enabled {
+            return Some(state);
+        }
+        let face_count = if lighting.two_side { 2 } else { 1 };
+        for (fast, face) in state.faces.iter_mut().zip(&lighting.faces) {
+            *fast = FastFace::new(face)?;
+        }
+        let faces = &state.faces[..face_count];
+        state.tracks_color = faces.iter().any(|f| f.tracked != MaterialMask::NONE);
+        let colors_ok = |c: &[f32]| c.iter().all(|v| *v >= 0.0);
+        if !colors_ok(&state.scene_ambient) {
+            return None;
+        }
+        for light in lighting.lights() {
+            state.lights[state.light_count] = FastLight::new(light, faces)?;
+            state.light_count += 1;
+        }
+        Some(state)
+    }
+
+    fn lights(&self) -> &[FastLight] {
+        &self.lights[..self.light_count]
+    }
+}
+
+impl FastFace {
+    fn new(face: &PreparedFace) -> Option<FastFace> {
+        let m = &face.material;
+        let fast = FastFace {
+            ambient: m.ambient.to_array(),
+            diffuse: m.diffuse.to_array(),
+            specular: m.specular.to_array(),
+            emission: m.emission.to_array(),
+            tracked: face.tracked,
+            shininess: integer_exponent(face.shininess)?,
+        };
+        // A tracked property is the vertex color, checked per lane.
+        let untracked_ok = [
+            (MaterialMask::AMBIENT, m.ambient),
+            (MaterialMask::DIFFUSE, m.diffuse),
+            (MaterialMask::SPECULAR, m.specular),
+            (MaterialMask::EMISSION, m.emission),
+        ]
+        .into_iter()
+        .all(|(mask, value)| face.tracked.contains(mask) || value.truncate().min_element() >= 0.0);
+        untracked_ok.then_some(fast)
+    }
+
+    /// The property `mask`'s RGB as the sensitivities see it: 1 where the color tracks it.
+    fn bound(&self, mask: MaterialMask, value: [f32; 4]) -> Vec4 {
+        if self.tracked.contains(mask) {
+            Vec4::ONE
+        } else {
+            Vec4::from_array(value)
+        }
+    }
+}
+
+impl FastLight {
+    fn new(light: &PreparedLight, faces: &[FastFace]) -> Option<FastLight> {
+        let colors = [light.ambient, light.diffuse, light.specular];
+        if colors.iter().any(|c| c.min_element() < 0.0) {
+            return None;
+        }
+        let position = rgb(light.position);
+        if !in_range(&position) {
+            return None;
+        }
+        let spot = light.spot_cos_cutoff.is_some();
+        let attenuation = light.attenuation.unwrap_or(DVec3::X);
+        let mut fast = FastLight {
+            positional: light.positional,
+            spot,
+            attenuation: light.attenuation.is_some(),
+            ambient: rgb(light.ambient),
+            diffuse: rgb(light.diffuse),
+            specular: rgb(light.specular),
+            position,
+            position_length: light.position.length() as f32,
+            infinite_half: rgb(light.infinite_half),
+            spot_direction: rgb(light.spot_direction),
+            spot_cos_cutoff: light.spot_cos_cutoff.unwrap_or(-1.0) as f32,
+            spot_exponent: if spot {
+                integer_exponent(light.spot_exponent)?
+            } else {
+                0
+            },
+            attenuation_factors: rgb(attenuation),
+            ..FastLight::default()
+        };
+        let largest =
+            |a: [f32; 3], m: Vec4| (glam::Vec3::from_array(a) * m.truncate()).max_element();
+        for (k, face) in faces.iter().enumerate() {
+            let a = largest(
+                fast.ambient,
+                face.bound(MaterialMask::AMBIENT, face.ambient),
+            );
+            let d = largest(
+                fast.diffuse,
+                face.bound(MaterialMask::DIFFUSE, face.diffuse),
+            );
+            let s = largest(
+                fast.specular,
+                face.bound(MaterialMask::SPECULAR, face.specular),
+            );
+            fast.diffuse_sensitivity = fast.diffuse_sensitivity.max(d);
+            fast.specular_sensitivity[k] = face.shininess as f32 * s;
+            for (bound, value) in fast.term_bounds.iter_mut().zip([a, d, s]) {
+                *bound = bound.max(value);
+            }
+        }
+        Some(fast)
+    }
+}
+
+/// Processes `inputs` into `outputs` (pairwise) with the fast engine, and returns true; or
+/// returns false, having written nothing, when the CPU lacks the instructions.
+pub(crate) fn process_blocks(
+    state: &FastState,
+    derived: &DerivedState,
+    inputs: &[InputBlock],
+    outputs: &mut [OutputBlock],
+) -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        let Some(kernel) = x86::kernel() else {
+            return false;
+        };
+        for (input, output) in inputs.iter().zip(outputs.iter_mut()) {
+            let refused = kernel(state, input, output);
+            if state.tex_gen {
+                generate_tex_coords(derived, input, output, refused);
+            }
+            relight_refused(derived, input, output, refused);
+        }
+        true
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = (state, derived, inputs, outputs);
+        false
+    }
+}
+
+/// The kernel alone on one block: its outputs for the lanes it serves, and the lanes it
+/// refuses (one bit each; their outputs are to be replaced), or `None` when the CPU lacks
+/// its instructions. Texture coordinate generation is left out. For tests and measurements.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::lighting::fast::kernel_block;
+/// use fflight::pipeline::block::{InputBlock, OutputBlock};
+/// use fflight::pipeline::vertex::CurrentAttribs;
+/// use fflight::Context;
+/// use glam::Vec4;
+/// let mut ctx = Context::new();
+/// let fast = ctx.derived().fast.clone().unwrap();
+/// let mut input = InputBlock::default();
+/// input.push(Vec4::new(f32::NAN, 0.0, 0.0, 1.0), &CurrentAttribs::default());
+/// input.push(Vec4::new(1.0, 2.0, 3.0, 1.0), &CurrentAttribs::default());
+/// let mut output = OutputBlock::default();
+/// if let Some(refused) = kernel_block(&fast, &input, &mut output) {
+///     assert_eq!(refused, 0b01); // the NaN lane goes to the scalar path
+///     assert_eq!(output.vertex(1).clip, Vec4::new(1.0, 2.0, 3.0, 1.0));
+/// }
+/// ```
+pub fn kernel_block(state: &FastState, input: &InputBlock, output: &mut OutputBlock) -> Option<u8> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        x86::kernel().map(|kernel| kernel(state, input, output))
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = (state, input, output);
+        None
+    }
+}
+
+/// The lanes the kernel refused, each through the scalar double-precision path.
+fn relight_refused(
+    derived: &DerivedState,
+    input: &InputBlock,
+    output: &mut OutputBlock,
+    mut refused: u8,
+) {
+    while refused != 0 {
+        let lane = refused.trailing_zeros() as usize;
+        refused &= refused - 1;
+        let (position, attribs) = lane_input(input, lane);
+        output.set_vertex(lane, &derived.process(position, &attribs));
+    }
+}
+
+/// Texture coordinate generation, lane by lane as the scalar path does it (generation is
+/// rare; it reads double-precision eye coordinates and normals). Refused lanes are done in
+/// full by `relight_refused`.
+fn generate_tex_coords(
+    derived: &DerivedState,
+    input: &InputBlock,
+    output: &mut OutputBlock,
+    refused: u8,
+) {
+    let transform = &derived.transform;
+    for lane in (0..input.len).filter(|lane| refused & (1 << lane) == 0) {
+        let (position, attribs) = lane_input(input, lane);
+        let eye = transform.modelview * position.as_dvec4();
+        let tex_coord = transform.tex_coord(position, eye, attribs.normal, attribs.tex_coord);
+        for (component, value) in output.tex_coord.iter_mut().zip(tex_coord.to_array()) {
+            component[lane] = value;
+        }
+    }
+}
+
+/// Lane `lane` of `input` as glVertex would have seen it.
+fn lane_input(input: &InputBlock, lane: usize) -> (Vec4, CurrentAttribs) {
+    let attribs = CurrentAttribs {
+        color: lanes4_get(&input.color, lane),
+        secondary_color: lanes4_get(&input.secondary_color, lane),
+        normal: glam::Vec3::new(
+            input.normal[0][lane],
+            input.normal[1][lane],
+            input.normal[2][lane],
+        ),
+        tex_coord: lanes4_get(&input.tex_coord, lane),
+        edge_flag: input.edge_flag[lane],
+        ..CurrentAttribs::default()
+    };
+    (lanes4_get(&input.position, lane), attribs)
+}
