@@ -391,6 +391,32 @@ static void given_compiled(int k, int unit, double *given)
         given[c] = compiled[k][unit][c];
 }
 
+/* A replayed glArrayElement(7): the arrays' element as compiled (taken by
+ * snapshot_element when the list is compiled); the units without an array keep the current
+ * coordinates of the replay, (-5, -6, 0, 1). */
+static double compiled_element[MAX_UNITS][4];
+
+static void snapshot_element(void)
+{
+    static const double replay_current[4] = { -5.0, -6.0, 0.0, 1.0 };
+    int unit, c;
+    for (unit = 0; unit < units; unit++) {
+        if (has_array(unit))
+            array_coords(7, unit, compiled_element[unit]);
+        else
+            for (c = 0; c < 4; c++)
+                compiled_element[unit][c] = replay_current[c];
+    }
+}
+
+static void given_compiled_element(int k, int unit, double *given)
+{
+    int c;
+    (void)k;
+    for (c = 0; c < 4; c++)
+        given[c] = compiled_element[unit][c];
+}
+
 static void read_error(const char *what, GLenum want)
 {
     GLenum error = glGetError();
@@ -418,6 +444,7 @@ int main(void)
     static const int elements[2] = { 5, 17 };
     static const int listed_elements[12] = { 3, 7, 7, 1, 20, 3, 0, 23, 11, 11, 5, 3 };
     static const int list_elements[9] = { 0, 1, 2, 0, 1, 2, 3, 4, 5 };
+    static const int seven[1] = { 7 };
     static GLfloat fb[4096];
     static FflCapturedVertex captured[8];
     static GLfloat unit_coords[MAX_UNITS][8][4];
@@ -425,7 +452,7 @@ int main(void)
     GLfloat before[4], after[4];
     GLint value, fed, first[2] = { 2, 15 };
     GLsizei count[2] = { 6, 4 };
-    GLuint list, at;
+    GLuint list, element_list, at;
     int i, k, unit, c, same;
 
     ffl_test_init();
@@ -495,12 +522,23 @@ int main(void)
             else /* the current coordinates the list's glMultiTexCoord left */
                 immediate_coords(2, unit, compiled[3 + k][unit]);
         }
+    element_list = glGenLists(1);
+    glNewList(element_list, GL_COMPILE);
+    glBegin(GL_POINTS);
+    glArrayElement(7);
+    glEnd();
+    glEndList();
+    snapshot_element();
     fill_arrays(5);
     glBindBuffer(GL_ARRAY_BUFFER, buffer);
     glBufferData(GL_ARRAY_BUFFER, sizeof unit1_data, unit1_data, GL_STATIC_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     for (unit = 0; unit < units; unit++)
         glMultiTexCoord2f(GL_TEXTURE0 + (GLenum)unit, -5.0f, -6.0f);
+    fflCaptureBegin();
+    glCallList(element_list);
+    fflCaptureEnd();
+    check("display list glArrayElement", 0, 1, seven, given_compiled_element);
     fflCaptureBegin();
     glCallList(list);
     fflCaptureEnd();

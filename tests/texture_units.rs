@@ -125,15 +125,9 @@ fn reference(unit: usize, object: Vec4, normal: Vec3, given: Vec4) -> DVec4 {
     let eye = modelview * object.as_dvec4();
     let inverse = modelview.inverse();
     let n = DVec3::new(
-        DVec4::from(inverse.col(0))
-            .truncate()
-            .dot(normal.as_dvec3()),
-        DVec4::from(inverse.col(1))
-            .truncate()
-            .dot(normal.as_dvec3()),
-        DVec4::from(inverse.col(2))
-            .truncate()
-            .dot(normal.as_dvec3()),
+        inverse.col(0).truncate().dot(normal.as_dvec3()),
+        inverse.col(1).truncate().dot(normal.as_dvec3()),
+        inverse.col(2).truncate().dot(normal.as_dvec3()),
     )
     .normalize();
     let u = eye.truncate().normalize();
@@ -351,7 +345,7 @@ impl ArrayScene {
                 .unwrap();
             ctx.client_active_texture(GL_TEXTURE0 + unit as GLenum)
                 .unwrap();
-            if unit % 2 == 0 {
+            if unit.is_multiple_of(2) {
                 let (size, component_type, stride, bytes) = unit_array(unit, count);
                 ctx.tex_coord_pointer(size, component_type, stride, bytes.as_ptr() as usize)
                     .unwrap();
@@ -382,7 +376,7 @@ impl ArrayScene {
     }
 
     fn given(element: usize, unit: usize) -> Vec4 {
-        if unit % 2 == 0 {
+        if unit.is_multiple_of(2) {
             array_given(element, unit)
         } else {
             given(99, unit)

@@ -229,7 +229,7 @@ impl<'a> ArraySources<'a> {
 }
 
 /// What the enabled arrays give one element; `None` for an array that is not enabled.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct ArrayElementValues {
     position: Option<Vec4>,
     normal: Option<Vec3>,
@@ -239,8 +239,9 @@ pub struct ArrayElementValues {
     secondary_color: Option<[f32; 3]>,
     fog_coord: Option<f32>,
     index: Option<f32>,
-    /// Texture units 1 and up's (by unit - 1).
-    unit_tex_coords: [Option<Vec4>; EXTRA_UNITS],
+    /// Texture units 1 and up's (by unit - 1); `None` when none of their arrays is enabled
+    /// (boxed: display lists keep many elements).
+    unit_tex_coords: Option<Box<[Option<Vec4>; EXTRA_UNITS]>>,
 }
 
 /// Decodes elements of the enabled arrays from sources checked to hold them.
@@ -331,7 +332,11 @@ impl<'a> ArrayReader<'a> {
                 .map(|c| [c[0], c[1], c[2]]),
             fog_coord: self.read(ArrayKind::FogCoord, index).map(|f| f[0]),
             index: self.read(ArrayKind::Index, index).map(|i| i[0]),
-            unit_tex_coords: std::array::from_fn(|k| self.read_unit(k, index)),
+            unit_tex_coords: self
+                .units
+                .iter()
+                .any(Option::is_some)
+                .then(|| Box::new(std::array::from_fn(|k| self.read_unit(k, index)))),
         }
     }
 }
@@ -885,9 +890,9 @@ impl Context {
         if let Some(tex_coord) = element.tex_coord {
             self.tex_coord(tex_coord);
         }
-        for (unit, tex_coord) in (1..).zip(element.unit_tex_coords) {
+        for (unit, tex_coord) in (1..).zip(element.unit_tex_coords.iter().flat_map(|t| t.iter())) {
             if let Some(tex_coord) = tex_coord {
-                self.current.set_unit_tex_coord(unit, tex_coord);
+                self.current.set_unit_tex_coord(unit, *tex_coord);
             }
         }
         if let Some(color) = element.color {
