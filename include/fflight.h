@@ -54,8 +54,9 @@ typedef struct Target Target;
 
 /*
  One captured vertex: positions in eye and clip coordinates, the lit colors of both faces
- (without two-sided lighting the back colors equal the front ones), the texture
- coordinate after the texture matrix, and the edge flag it was given.
+ (without two-sided lighting the back colors equal the front ones), texture unit 0's
+ coordinates after generation and the texture matrix (fflCaptureReadTexCoords reads every
+ unit's), and the edge flag it was given.
  */
 typedef struct FflCapturedVertex {
   GLfloat eye[4];
@@ -3822,6 +3823,19 @@ GLuint fflCaptureReadVertices(GLuint first, GLuint count, struct FflCapturedVert
 GLuint fflCaptureReadPrimitives(GLuint first,
                                 GLuint count,
                                 struct FflCapturedPrimitive *primitives);
+
+/*
+ Copies texture unit `texture`'s coordinates (after that unit's coordinate generation and
+ texture matrix) of captured vertices `first..first + count` (fewer at the end) to
+ `coords`, 4 floats per vertex, and returns how many vertices were copied. Unit 0's are the
+ `tex_coord` of fflCaptureReadVertices. GL_INVALID_ENUM (nothing copied) unless `texture`
+ is GL_TEXTUREi of a unit (i below GL_MAX_TEXTURE_UNITS); NULL `coords` with a positive
+ count is GL_INVALID_VALUE.
+
+ # Safety
+ `coords` is NULL or has room for `4 * count` floats.
+ */
+GLuint fflCaptureReadTexCoords(GLenum texture, GLuint first, GLuint count, GLfloat *coords);
 
 /*
  Lights `count` vertices with the current state, exactly as glColor4fv, glNormal3fv and

@@ -46,6 +46,8 @@ pub enum RenderMode {
 pub struct PrimitiveInProgress {
     pub(crate) pending: InputBlock,
     pub(crate) stream: DrawStream,
+    /// Texture units 1 and up's coordinates of the pending vertices, while capture is on.
+    pub(crate) units: Option<Box<crate::pipeline::units::PendingUnits>>,
 }
 
 /// One GL context. Every GL command is a method; state changes that affect vertex processing

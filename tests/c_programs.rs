@@ -561,6 +561,7 @@ c_programs!(
     capture_api,
     capture_light_vertices,
     capture_example,
+    capture_texture_units,
     feedback_types_polygons,
     feedback_overflow_polygons,
     clip_line_strip_reset,

@@ -137,6 +137,7 @@ unsafe extern "C" {
     fn fflCapturePrimitiveCount() -> GLuint;
     fn fflCaptureReadVertices(first: GLuint, count: GLuint, vertices: *mut c_void) -> GLuint;
     fn fflCaptureReadPrimitives(first: GLuint, count: GLuint, primitives: *mut c_void) -> GLuint;
+    fn fflCaptureReadTexCoords(texture: GLenum, first: GLuint, count: GLuint, coords: *mut GLfloat) -> GLuint;
     fn fflLightVertices(count: GLsizei, position_size: GLint, positions: *const GLfloat, position_stride: GLsizei, normals: *const GLfloat, normal_stride: GLsizei, colors: *const GLfloat, color_stride: GLsizei, eye_positions: *mut GLfloat, eye_stride: GLsizei, clip_positions: *mut GLfloat, clip_stride: GLsizei, front_primary: *mut GLfloat, front_primary_stride: GLsizei, front_secondary: *mut GLfloat, front_secondary_stride: GLsizei, back_primary: *mut GLfloat, back_primary_stride: GLsizei, back_secondary: *mut GLfloat, back_secondary_stride: GLsizei);
     fn fflCreateContext() -> *mut c_void;
     fn fflMakeCurrent(context: *mut c_void) -> GLboolean;
@@ -683,6 +684,7 @@ pub const FUNCTIONS: &[&str] = &[
     "fflCapturePrimitiveCount",
     "fflCaptureReadVertices",
     "fflCaptureReadPrimitives",
+    "fflCaptureReadTexCoords",
     "fflLightVertices",
     "fflCreateContext",
     "fflMakeCurrent",
@@ -1779,6 +1781,13 @@ pub fn call(h: &mut Harness, index: usize) {
             let _ = unsafe { fflCaptureReadPrimitives(a0, a1, a2) };
         }
         135 => {
+            let a0 = h.enumeration();
+            let a1 = h.integer(IntClass::Count) as GLuint;
+            let a2 = h.integer(IntClass::Count) as GLuint;
+            let a3 = h.output_pointer(3) as *mut GLfloat;
+            let _ = unsafe { fflCaptureReadTexCoords(a0, a1, a2, a3) };
+        }
+        136 => {
             let a0 = h.integer(IntClass::Count) as GLsizei;
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.input_pointer(Region::Floats) as *const GLfloat;
@@ -1801,207 +1810,198 @@ pub fn call(h: &mut Harness, index: usize) {
             let a19 = h.integer(IntClass::Stride) as GLsizei;
             let _ = unsafe { fflLightVertices(a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11, a12, a13, a14, a15, a16, a17, a18, a19) };
         }
-        136 => h.special("fflCreateContext"),
-        137 => h.special("fflMakeCurrent"),
-        138 => h.special("fflGetCurrentContext"),
-        139 => h.special("fflDestroyContext"),
-        140 => h.special("fflSetThreads"),
-        141 => {
+        137 => h.special("fflCreateContext"),
+        138 => h.special("fflMakeCurrent"),
+        139 => h.special("fflGetCurrentContext"),
+        140 => h.special("fflDestroyContext"),
+        141 => h.special("fflSetThreads"),
+        142 => {
             let _ = unsafe { fflGetThreads() };
         }
-        142 => h.special("glFeedbackBuffer"),
-        143 => h.special("glRenderMode"),
-        144 => {
+        143 => h.special("glFeedbackBuffer"),
+        144 => h.special("glRenderMode"),
+        145 => {
             let _ = unsafe { glFlush() };
         }
-        145 => {
+        146 => {
             let _ = unsafe { glFinish() };
         }
-        146 => {
+        147 => {
             let a0 = h.enumeration();
             let _ = unsafe { glBegin(a0) };
         }
-        147 => {
+        148 => {
             let _ = unsafe { glEnd() };
         }
-        148 => {
+        149 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Dimension) as GLsizei;
             let a3 = h.integer(IntClass::Dimension) as GLsizei;
             let _ = unsafe { glViewport(a0, a1, a2, a3) };
         }
-        149 => {
+        150 => {
             let a0 = h.double();
             let a1 = h.double();
             let _ = unsafe { glDepthRange(a0, a1) };
         }
-        150 => {
+        151 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.float();
             let _ = unsafe { glLightf(a0, a1, a2) };
         }
-        151 => {
+        152 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glLighti(a0, a1, a2) };
         }
-        152 => {
+        153 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glLightfv(a0, a1, a2) };
         }
-        153 => {
+        154 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glLightiv(a0, a1, a2) };
         }
-        154 => {
+        155 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.float();
             let _ = unsafe { glMaterialf(a0, a1, a2) };
         }
-        155 => {
+        156 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glMateriali(a0, a1, a2) };
         }
-        156 => {
+        157 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glMaterialfv(a0, a1, a2) };
         }
-        157 => {
+        158 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glMaterialiv(a0, a1, a2) };
         }
-        158 => {
+        159 => {
             let a0 = h.enumeration();
             let a1 = h.float();
             let _ = unsafe { glLightModelf(a0, a1) };
         }
-        159 => {
+        160 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glLightModeli(a0, a1) };
         }
-        160 => {
+        161 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glLightModelfv(a0, a1) };
         }
-        161 => {
+        162 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glLightModeliv(a0, a1) };
         }
-        162 => {
+        163 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let _ = unsafe { glColorMaterial(a0, a1) };
         }
-        163 => {
+        164 => {
             let a0 = h.enumeration();
             let _ = unsafe { glEnable(a0) };
         }
-        164 => {
+        165 => {
             let a0 = h.enumeration();
             let _ = unsafe { glDisable(a0) };
         }
-        165 => {
+        166 => {
             let a0 = h.enumeration();
             let _ = unsafe { glMatrixMode(a0) };
         }
-        166 => {
+        167 => {
             let _ = unsafe { glLoadIdentity() };
         }
-        167 => {
+        168 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glLoadMatrixf(a0) };
         }
-        168 => {
+        169 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glLoadMatrixd(a0) };
         }
-        169 => {
+        170 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glMultMatrixf(a0) };
         }
-        170 => {
+        171 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glMultMatrixd(a0) };
         }
-        171 => {
+        172 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glLoadTransposeMatrixf(a0) };
         }
-        172 => {
+        173 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glLoadTransposeMatrixd(a0) };
         }
-        173 => {
+        174 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glMultTransposeMatrixf(a0) };
         }
-        174 => {
+        175 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glMultTransposeMatrixd(a0) };
         }
-        175 => {
+        176 => {
             let a0 = h.float();
             let a1 = h.float();
             let a2 = h.float();
             let _ = unsafe { glTranslatef(a0, a1, a2) };
         }
-        176 => {
+        177 => {
             let a0 = h.double();
             let a1 = h.double();
             let a2 = h.double();
             let _ = unsafe { glTranslated(a0, a1, a2) };
         }
-        177 => {
+        178 => {
             let a0 = h.float();
             let a1 = h.float();
             let a2 = h.float();
             let a3 = h.float();
             let _ = unsafe { glRotatef(a0, a1, a2, a3) };
         }
-        178 => {
+        179 => {
             let a0 = h.double();
             let a1 = h.double();
             let a2 = h.double();
             let a3 = h.double();
             let _ = unsafe { glRotated(a0, a1, a2, a3) };
         }
-        179 => {
+        180 => {
             let a0 = h.float();
             let a1 = h.float();
             let a2 = h.float();
             let _ = unsafe { glScalef(a0, a1, a2) };
         }
-        180 => {
-            let a0 = h.double();
-            let a1 = h.double();
-            let a2 = h.double();
-            let _ = unsafe { glScaled(a0, a1, a2) };
-        }
         181 => {
             let a0 = h.double();
             let a1 = h.double();
             let a2 = h.double();
-            let a3 = h.double();
-            let a4 = h.double();
-            let a5 = h.double();
-            let _ = unsafe { glFrustum(a0, a1, a2, a3, a4, a5) };
+            let _ = unsafe { glScaled(a0, a1, a2) };
         }
         182 => {
             let a0 = h.double();
@@ -2010,544 +2010,553 @@ pub fn call(h: &mut Harness, index: usize) {
             let a3 = h.double();
             let a4 = h.double();
             let a5 = h.double();
-            let _ = unsafe { glOrtho(a0, a1, a2, a3, a4, a5) };
+            let _ = unsafe { glFrustum(a0, a1, a2, a3, a4, a5) };
         }
         183 => {
-            let _ = unsafe { glPushMatrix() };
+            let a0 = h.double();
+            let a1 = h.double();
+            let a2 = h.double();
+            let a3 = h.double();
+            let a4 = h.double();
+            let a5 = h.double();
+            let _ = unsafe { glOrtho(a0, a1, a2, a3, a4, a5) };
         }
         184 => {
-            let _ = unsafe { glPopMatrix() };
+            let _ = unsafe { glPushMatrix() };
         }
         185 => {
+            let _ = unsafe { glPopMatrix() };
+        }
+        186 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glClipPlane(a0, a1) };
         }
-        186 => {
+        187 => {
             let a0 = h.enumeration();
             let _ = unsafe { glShadeModel(a0) };
         }
-        187 => {
+        188 => {
             let a0 = h.enumeration();
             let _ = unsafe { glFrontFace(a0) };
         }
-        188 => {
+        189 => {
             let a0 = h.enumeration();
             let _ = unsafe { glCullFace(a0) };
         }
-        189 => {
+        190 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let _ = unsafe { glPolygonMode(a0, a1) };
         }
-        190 => {
+        191 => {
             let a0 = h.float();
             let a1 = h.float();
             let a2 = h.float();
             let a3 = h.float();
             let _ = unsafe { glRectf(a0, a1, a2, a3) };
         }
-        191 => {
+        192 => {
             let a0 = h.double();
             let a1 = h.double();
             let a2 = h.double();
             let a3 = h.double();
             let _ = unsafe { glRectd(a0, a1, a2, a3) };
         }
-        192 => {
+        193 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
             let a3 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glRecti(a0, a1, a2, a3) };
         }
-        193 => {
+        194 => {
             let a0 = h.integer(IntClass::Any) as GLshort;
             let a1 = h.integer(IntClass::Any) as GLshort;
             let a2 = h.integer(IntClass::Any) as GLshort;
             let a3 = h.integer(IntClass::Any) as GLshort;
             let _ = unsafe { glRects(a0, a1, a2, a3) };
         }
-        194 => {
+        195 => {
             let _ = unsafe { glInitNames() };
         }
-        195 => {
+        196 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glPushName(a0) };
         }
-        196 => {
+        197 => {
             let _ = unsafe { glPopName() };
         }
-        197 => {
+        198 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glLoadName(a0) };
         }
-        198 => {
+        199 => {
             let a0 = h.float();
             let _ = unsafe { glPassThrough(a0) };
         }
-        199 => {
+        200 => {
             let a0 = h.integer(IntClass::Count) as GLsizei;
             let _ = unsafe { glGenLists(a0) };
         }
-        200 => {
+        201 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let a1 = h.enumeration();
             let _ = unsafe { glNewList(a0, a1) };
         }
-        201 => {
+        202 => {
             let _ = unsafe { glEndList() };
         }
-        202 => {
+        203 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let a1 = h.integer(IntClass::Count) as GLsizei;
             let _ = unsafe { glDeleteLists(a0, a1) };
         }
-        203 => {
+        204 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glIsList(a0) };
         }
-        204 => h.special("glCallList"),
-        205 => {
+        205 => h.special("glCallList"),
+        206 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glListBase(a0) };
         }
-        206 => {
+        207 => {
             let a0 = h.float();
             let _ = unsafe { glPointSize(a0) };
         }
-        207 => {
+        208 => {
             let a0 = h.enumeration();
             let a1 = h.float();
             let _ = unsafe { glPointParameterf(a0, a1) };
         }
-        208 => {
+        209 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glPointParameteri(a0, a1) };
         }
-        209 => {
+        210 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glPointParameterfv(a0, a1) };
         }
-        210 => {
+        211 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glPointParameteriv(a0, a1) };
         }
-        211 => {
+        212 => {
             let a0 = h.float();
             let _ = unsafe { glLineWidth(a0) };
         }
-        212 => {
+        213 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let a1 = h.integer(IntClass::Any) as GLushort;
             let _ = unsafe { glLineStipple(a0, a1) };
         }
-        213 => {
+        214 => {
             let a0 = h.float();
             let a1 = h.float();
             let _ = unsafe { glPolygonOffset(a0, a1) };
         }
-        214 => {
+        215 => {
             let a0 = h.float();
             let a1 = h.byte();
             let _ = unsafe { glSampleCoverage(a0, a1) };
         }
-        215 => {
+        216 => {
             let a0 = h.input_pointer(Region::Bytes) as *const GLubyte;
             let _ = unsafe { glPolygonStipple(a0) };
         }
-        216 => {
+        217 => {
             let a0 = h.output_pointer(0) as *mut GLubyte;
             let _ = unsafe { glGetPolygonStipple(a0) };
         }
-        217 => {
+        218 => {
             let a0 = h.input_pointer(Region::Shorts) as *const GLshort;
             let a1 = h.input_pointer(Region::Shorts) as *const GLshort;
             let _ = unsafe { glRectsv(a0, a1) };
         }
-        218 => {
+        219 => {
             let a0 = h.input_pointer(Region::Ints) as *const GLint;
             let a1 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glRectiv(a0, a1) };
         }
-        219 => {
+        220 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let a1 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glRectfv(a0, a1) };
         }
-        220 => {
+        221 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let a1 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glRectdv(a0, a1) };
         }
-        221 => {
+        222 => {
             let a0 = h.enumeration();
             let a1 = h.float();
             let _ = unsafe { glFogf(a0, a1) };
         }
-        222 => {
+        223 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glFogi(a0, a1) };
         }
-        223 => {
+        224 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glFogfv(a0, a1) };
         }
-        224 => {
+        225 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glFogiv(a0, a1) };
         }
-        225 => {
+        226 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let _ = unsafe { glHint(a0, a1) };
         }
-        226 => {
+        227 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Dimension) as GLsizei;
             let a3 = h.integer(IntClass::Dimension) as GLsizei;
             let _ = unsafe { glScissor(a0, a1, a2, a3) };
         }
-        227 => {
+        228 => {
             let a0 = h.enumeration();
             let a1 = h.float();
             let _ = unsafe { glAlphaFunc(a0, a1) };
         }
-        228 => {
+        229 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glStencilFunc(a0, a1, a2) };
         }
-        229 => {
+        230 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.enumeration();
             let _ = unsafe { glStencilOp(a0, a1, a2) };
         }
-        230 => {
+        231 => {
             let a0 = h.enumeration();
             let _ = unsafe { glDepthFunc(a0) };
         }
-        231 => {
+        232 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let _ = unsafe { glBlendFunc(a0, a1) };
         }
-        232 => {
+        233 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.enumeration();
             let a3 = h.enumeration();
             let _ = unsafe { glBlendFuncSeparate(a0, a1, a2, a3) };
         }
-        233 => {
+        234 => {
             let a0 = h.float();
             let a1 = h.float();
             let a2 = h.float();
             let a3 = h.float();
             let _ = unsafe { glBlendColor(a0, a1, a2, a3) };
         }
-        234 => {
+        235 => {
             let a0 = h.enumeration();
             let _ = unsafe { glBlendEquation(a0) };
         }
-        235 => {
+        236 => {
             let a0 = h.enumeration();
             let _ = unsafe { glLogicOp(a0) };
         }
-        236 => {
+        237 => {
             let a0 = h.enumeration();
             let _ = unsafe { glDrawBuffer(a0) };
         }
-        237 => {
+        238 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glIndexMask(a0) };
         }
-        238 => {
+        239 => {
             let a0 = h.byte();
             let a1 = h.byte();
             let a2 = h.byte();
             let a3 = h.byte();
             let _ = unsafe { glColorMask(a0, a1, a2, a3) };
         }
-        239 => {
+        240 => {
             let a0 = h.byte();
             let _ = unsafe { glDepthMask(a0) };
         }
-        240 => {
+        241 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glStencilMask(a0) };
         }
-        241 => {
+        242 => {
             let a0 = h.bitfield();
             let _ = unsafe { glClear(a0) };
         }
-        242 => {
+        243 => {
             let a0 = h.float();
             let a1 = h.float();
             let a2 = h.float();
             let a3 = h.float();
             let _ = unsafe { glClearColor(a0, a1, a2, a3) };
         }
-        243 => {
+        244 => {
             let a0 = h.float();
             let _ = unsafe { glClearIndex(a0) };
         }
-        244 => {
+        245 => {
             let a0 = h.double();
             let _ = unsafe { glClearDepth(a0) };
         }
-        245 => {
+        246 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glClearStencil(a0) };
         }
-        246 => {
+        247 => {
             let a0 = h.float();
             let a1 = h.float();
             let a2 = h.float();
             let a3 = h.float();
             let _ = unsafe { glClearAccum(a0, a1, a2, a3) };
         }
-        247 => {
+        248 => {
             let a0 = h.enumeration();
             let a1 = h.float();
             let _ = unsafe { glAccum(a0, a1) };
         }
-        248 => h.special("glPixelStoref"),
-        249 => h.special("glPixelStorei"),
-        250 => {
+        249 => h.special("glPixelStoref"),
+        250 => h.special("glPixelStorei"),
+        251 => {
             let a0 = h.enumeration();
             let a1 = h.float();
             let _ = unsafe { glPixelTransferf(a0, a1) };
         }
-        251 => {
+        252 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glPixelTransferi(a0, a1) };
         }
-        252 => {
+        253 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Count) as GLsizei;
             let a2 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glPixelMapfv(a0, a1, a2) };
         }
-        253 => {
+        254 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Count) as GLsizei;
             let a2 = h.input_pointer(Region::Ints) as *const GLuint;
             let _ = unsafe { glPixelMapuiv(a0, a1, a2) };
         }
-        254 => {
+        255 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Count) as GLsizei;
             let a2 = h.input_pointer(Region::Shorts) as *const GLushort;
             let _ = unsafe { glPixelMapusv(a0, a1, a2) };
         }
-        255 => {
+        256 => {
             let a0 = h.enumeration();
             let a1 = h.output_pointer(1) as *mut GLfloat;
             let _ = unsafe { glGetPixelMapfv(a0, a1) };
         }
-        256 => {
+        257 => {
             let a0 = h.enumeration();
             let a1 = h.output_pointer(1) as *mut GLuint;
             let _ = unsafe { glGetPixelMapuiv(a0, a1) };
         }
-        257 => {
+        258 => {
             let a0 = h.enumeration();
             let a1 = h.output_pointer(1) as *mut GLushort;
             let _ = unsafe { glGetPixelMapusv(a0, a1) };
         }
-        258 => {
+        259 => {
             let a0 = h.float();
             let a1 = h.float();
             let _ = unsafe { glPixelZoom(a0, a1) };
         }
-        259 => {
+        260 => {
             let a0 = h.enumeration();
             let _ = unsafe { glReadBuffer(a0) };
         }
-        260 => {
+        261 => {
             let a0 = h.integer(IntClass::Any) as GLbyte;
             let a1 = h.integer(IntClass::Any) as GLbyte;
             let a2 = h.integer(IntClass::Any) as GLbyte;
             let _ = unsafe { glSecondaryColor3b(a0, a1, a2) };
         }
-        261 => {
+        262 => {
             let a0 = h.input_pointer(Region::Bytes) as *const GLbyte;
             let _ = unsafe { glSecondaryColor3bv(a0) };
         }
-        262 => {
+        263 => {
             let a0 = h.integer(IntClass::Any) as GLshort;
             let a1 = h.integer(IntClass::Any) as GLshort;
             let a2 = h.integer(IntClass::Any) as GLshort;
             let _ = unsafe { glSecondaryColor3s(a0, a1, a2) };
         }
-        263 => {
+        264 => {
             let a0 = h.input_pointer(Region::Shorts) as *const GLshort;
             let _ = unsafe { glSecondaryColor3sv(a0) };
         }
-        264 => {
+        265 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glSecondaryColor3i(a0, a1, a2) };
         }
-        265 => {
+        266 => {
             let a0 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glSecondaryColor3iv(a0) };
         }
-        266 => {
+        267 => {
             let a0 = h.float();
             let a1 = h.float();
             let a2 = h.float();
             let _ = unsafe { glSecondaryColor3f(a0, a1, a2) };
         }
-        267 => {
+        268 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glSecondaryColor3fv(a0) };
         }
-        268 => {
+        269 => {
             let a0 = h.double();
             let a1 = h.double();
             let a2 = h.double();
             let _ = unsafe { glSecondaryColor3d(a0, a1, a2) };
         }
-        269 => {
+        270 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glSecondaryColor3dv(a0) };
         }
-        270 => {
+        271 => {
             let a0 = h.integer(IntClass::Any) as GLubyte;
             let a1 = h.integer(IntClass::Any) as GLubyte;
             let a2 = h.integer(IntClass::Any) as GLubyte;
             let _ = unsafe { glSecondaryColor3ub(a0, a1, a2) };
         }
-        271 => {
+        272 => {
             let a0 = h.input_pointer(Region::Bytes) as *const GLubyte;
             let _ = unsafe { glSecondaryColor3ubv(a0) };
         }
-        272 => {
+        273 => {
             let a0 = h.integer(IntClass::Any) as GLushort;
             let a1 = h.integer(IntClass::Any) as GLushort;
             let a2 = h.integer(IntClass::Any) as GLushort;
             let _ = unsafe { glSecondaryColor3us(a0, a1, a2) };
         }
-        273 => {
+        274 => {
             let a0 = h.input_pointer(Region::Shorts) as *const GLushort;
             let _ = unsafe { glSecondaryColor3usv(a0) };
         }
-        274 => {
+        275 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let a1 = h.integer(IntClass::Any) as GLuint;
             let a2 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glSecondaryColor3ui(a0, a1, a2) };
         }
-        275 => {
+        276 => {
             let a0 = h.input_pointer(Region::Ints) as *const GLuint;
             let _ = unsafe { glSecondaryColor3uiv(a0) };
         }
-        276 => {
+        277 => {
             let a0 = h.float();
             let _ = unsafe { glFogCoordf(a0) };
         }
-        277 => {
+        278 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glFogCoordfv(a0) };
         }
-        278 => {
+        279 => {
             let a0 = h.double();
             let _ = unsafe { glFogCoordd(a0) };
         }
-        279 => {
+        280 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glFogCoorddv(a0) };
         }
-        280 => {
+        281 => {
             let a0 = h.integer(IntClass::Any) as GLshort;
             let a1 = h.integer(IntClass::Any) as GLshort;
             let _ = unsafe { glWindowPos2s(a0, a1) };
         }
-        281 => {
+        282 => {
             let a0 = h.input_pointer(Region::Shorts) as *const GLshort;
             let _ = unsafe { glWindowPos2sv(a0) };
         }
-        282 => {
+        283 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let a1 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glWindowPos2i(a0, a1) };
         }
-        283 => {
+        284 => {
             let a0 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glWindowPos2iv(a0) };
         }
-        284 => {
+        285 => {
             let a0 = h.float();
             let a1 = h.float();
             let _ = unsafe { glWindowPos2f(a0, a1) };
         }
-        285 => {
+        286 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glWindowPos2fv(a0) };
         }
-        286 => {
+        287 => {
             let a0 = h.double();
             let a1 = h.double();
             let _ = unsafe { glWindowPos2d(a0, a1) };
         }
-        287 => {
+        288 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glWindowPos2dv(a0) };
         }
-        288 => {
+        289 => {
             let a0 = h.integer(IntClass::Any) as GLshort;
             let a1 = h.integer(IntClass::Any) as GLshort;
             let a2 = h.integer(IntClass::Any) as GLshort;
             let _ = unsafe { glWindowPos3s(a0, a1, a2) };
         }
-        289 => {
+        290 => {
             let a0 = h.input_pointer(Region::Shorts) as *const GLshort;
             let _ = unsafe { glWindowPos3sv(a0) };
         }
-        290 => {
+        291 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glWindowPos3i(a0, a1, a2) };
         }
-        291 => {
+        292 => {
             let a0 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glWindowPos3iv(a0) };
         }
-        292 => {
+        293 => {
             let a0 = h.float();
             let a1 = h.float();
             let a2 = h.float();
             let _ = unsafe { glWindowPos3f(a0, a1, a2) };
         }
-        293 => {
+        294 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glWindowPos3fv(a0) };
         }
-        294 => {
+        295 => {
             let a0 = h.double();
             let a1 = h.double();
             let a2 = h.double();
             let _ = unsafe { glWindowPos3d(a0, a1, a2) };
         }
-        295 => {
+        296 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glWindowPos3dv(a0) };
         }
-        296 => {
+        297 => {
             let a0 = h.integer(IntClass::Dimension) as GLsizei;
             let a1 = h.integer(IntClass::Dimension) as GLsizei;
             let a2 = h.float();
@@ -2557,7 +2566,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a6 = h.input_pointer(Region::Bytes) as *const GLubyte;
             let _ = unsafe { glBitmap(a0, a1, a2, a3, a4, a5, a6) };
         }
-        297 => {
+        298 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Dimension) as GLsizei;
@@ -2565,209 +2574,209 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.enumeration();
             let _ = unsafe { glCopyPixels(a0, a1, a2, a3, a4) };
         }
-        298 => {
+        299 => {
             let a0 = h.integer(IntClass::Count) as GLsizei;
             let a1 = h.output_pointer(1) as *mut GLuint;
             let _ = unsafe { glGenQueries(a0, a1) };
         }
-        299 => {
+        300 => {
             let a0 = h.integer(IntClass::Count) as GLsizei;
             let a1 = h.input_pointer(Region::Ints) as *const GLuint;
             let _ = unsafe { glDeleteQueries(a0, a1) };
         }
-        300 => {
+        301 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glIsQuery(a0) };
         }
-        301 => {
+        302 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glBeginQuery(a0, a1) };
         }
-        302 => {
+        303 => {
             let a0 = h.enumeration();
             let _ = unsafe { glEndQuery(a0) };
         }
-        303 => {
+        304 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLint;
             let _ = unsafe { glGetQueryiv(a0, a1, a2) };
         }
-        304 => {
+        305 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLint;
             let _ = unsafe { glGetQueryObjectiv(a0, a1, a2) };
         }
-        305 => {
+        306 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLuint;
             let _ = unsafe { glGetQueryObjectuiv(a0, a1, a2) };
         }
-        306 => {
+        307 => {
             let a0 = h.double();
             let _ = unsafe { glIndexd(a0) };
         }
-        307 => {
+        308 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glIndexdv(a0) };
         }
-        308 => {
+        309 => {
             let a0 = h.float();
             let _ = unsafe { glIndexf(a0) };
         }
-        309 => {
+        310 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glIndexfv(a0) };
         }
-        310 => {
+        311 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glIndexi(a0) };
         }
-        311 => {
+        312 => {
             let a0 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glIndexiv(a0) };
         }
-        312 => {
+        313 => {
             let a0 = h.integer(IntClass::Any) as GLshort;
             let _ = unsafe { glIndexs(a0) };
         }
-        313 => {
+        314 => {
             let a0 = h.input_pointer(Region::Shorts) as *const GLshort;
             let _ = unsafe { glIndexsv(a0) };
         }
-        314 => {
+        315 => {
             let a0 = h.integer(IntClass::Any) as GLubyte;
             let _ = unsafe { glIndexub(a0) };
         }
-        315 => {
+        316 => {
             let a0 = h.input_pointer(Region::Bytes) as *const GLubyte;
             let _ = unsafe { glIndexubv(a0) };
         }
-        316 => {
+        317 => {
             let a0 = h.enumeration();
             let _ = unsafe { glActiveTexture(a0) };
         }
-        317 => {
+        318 => {
             let a0 = h.integer(IntClass::Count) as GLsizei;
             let a1 = h.output_pointer(1) as *mut GLuint;
             let _ = unsafe { glGenTextures(a0, a1) };
         }
-        318 => {
+        319 => {
             let a0 = h.integer(IntClass::Count) as GLsizei;
             let a1 = h.input_pointer(Region::Ints) as *const GLuint;
             let _ = unsafe { glDeleteTextures(a0, a1) };
         }
-        319 => {
+        320 => {
             let a0 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glIsTexture(a0) };
         }
-        320 => {
+        321 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLuint;
             let _ = unsafe { glBindTexture(a0, a1) };
         }
-        321 => {
+        322 => {
             let a0 = h.integer(IntClass::Count) as GLsizei;
             let a1 = h.input_pointer(Region::Ints) as *const GLuint;
             let a2 = h.output_pointer(2) as *mut GLboolean;
             let _ = unsafe { glAreTexturesResident(a0, a1, a2) };
         }
-        322 => {
+        323 => {
             let a0 = h.integer(IntClass::Count) as GLsizei;
             let a1 = h.input_pointer(Region::Ints) as *const GLuint;
             let a2 = h.input_pointer(Region::Floats) as *const GLclampf;
             let _ = unsafe { glPrioritizeTextures(a0, a1, a2) };
         }
-        323 => {
+        324 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.float();
             let _ = unsafe { glTexParameterf(a0, a1, a2) };
         }
-        324 => {
+        325 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glTexParameteri(a0, a1, a2) };
         }
-        325 => {
+        326 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glTexParameterfv(a0, a1, a2) };
         }
-        326 => {
+        327 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glTexParameteriv(a0, a1, a2) };
         }
-        327 => {
+        328 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLfloat;
             let _ = unsafe { glGetTexParameterfv(a0, a1, a2) };
         }
-        328 => {
+        329 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLint;
             let _ = unsafe { glGetTexParameteriv(a0, a1, a2) };
         }
-        329 => {
+        330 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.float();
             let _ = unsafe { glTexEnvf(a0, a1, a2) };
         }
-        330 => {
+        331 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glTexEnvi(a0, a1, a2) };
         }
-        331 => {
+        332 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glTexEnvfv(a0, a1, a2) };
         }
-        332 => {
+        333 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glTexEnviv(a0, a1, a2) };
         }
-        333 => {
+        334 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLfloat;
             let _ = unsafe { glGetTexEnvfv(a0, a1, a2) };
         }
-        334 => {
+        335 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLint;
             let _ = unsafe { glGetTexEnviv(a0, a1, a2) };
         }
-        335 => {
+        336 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.enumeration();
             let a3 = h.output_pointer(3) as *mut GLint;
             let _ = unsafe { glGetTexLevelParameteriv(a0, a1, a2, a3) };
         }
-        336 => {
+        337 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.enumeration();
             let a3 = h.output_pointer(3) as *mut GLfloat;
             let _ = unsafe { glGetTexLevelParameterfv(a0, a1, a2, a3) };
         }
-        337 => {
+        338 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.enumeration();
@@ -2777,7 +2786,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a6 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glCopyTexImage1D(a0, a1, a2, a3, a4, a5, a6) };
         }
-        338 => {
+        339 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.enumeration();
@@ -2788,7 +2797,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a7 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glCopyTexImage2D(a0, a1, a2, a3, a4, a5, a6, a7) };
         }
-        339 => {
+        340 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -2797,7 +2806,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a5 = h.integer(IntClass::Dimension) as GLsizei;
             let _ = unsafe { glCopyTexSubImage1D(a0, a1, a2, a3, a4, a5) };
         }
-        340 => {
+        341 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -2808,7 +2817,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a7 = h.integer(IntClass::Dimension) as GLsizei;
             let _ = unsafe { glCopyTexSubImage2D(a0, a1, a2, a3, a4, a5, a6, a7) };
         }
-        341 => {
+        342 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -2820,211 +2829,211 @@ pub fn call(h: &mut Harness, index: usize) {
             let a8 = h.integer(IntClass::Dimension) as GLsizei;
             let _ = unsafe { glCopyTexSubImage3D(a0, a1, a2, a3, a4, a5, a6, a7, a8) };
         }
-        342 => {
+        343 => {
             let a0 = h.bitfield();
             let _ = unsafe { glPushAttrib(a0) };
         }
-        343 => {
+        344 => {
             let _ = unsafe { glPopAttrib() };
         }
-        344 => {
+        345 => {
             let a0 = h.bitfield();
             let _ = unsafe { glPushClientAttrib(a0) };
         }
-        345 => {
+        346 => {
             let _ = unsafe { glPopClientAttrib() };
         }
-        346 => {
+        347 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glTexGeni(a0, a1, a2) };
         }
-        347 => {
+        348 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glTexGeniv(a0, a1, a2) };
         }
-        348 => {
+        349 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.float();
             let _ = unsafe { glTexGenf(a0, a1, a2) };
         }
-        349 => {
+        350 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glTexGenfv(a0, a1, a2) };
         }
-        350 => {
+        351 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.double();
             let _ = unsafe { glTexGend(a0, a1, a2) };
         }
-        351 => {
+        352 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glTexGendv(a0, a1, a2) };
         }
-        352 => {
+        353 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLint;
             let _ = unsafe { glGetTexGeniv(a0, a1, a2) };
         }
-        353 => {
+        354 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLfloat;
             let _ = unsafe { glGetTexGenfv(a0, a1, a2) };
         }
-        354 => {
+        355 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLdouble;
             let _ = unsafe { glGetTexGendv(a0, a1, a2) };
         }
-        355 => {
+        356 => {
             let a0 = h.enumeration();
             let _ = unsafe { glClientActiveTexture(a0) };
         }
-        356 => {
+        357 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLshort;
             let _ = unsafe { glMultiTexCoord1s(a0, a1) };
         }
-        357 => {
+        358 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Shorts) as *const GLshort;
             let _ = unsafe { glMultiTexCoord1sv(a0, a1) };
         }
-        358 => {
+        359 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glMultiTexCoord1i(a0, a1) };
         }
-        359 => {
+        360 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glMultiTexCoord1iv(a0, a1) };
         }
-        360 => {
+        361 => {
             let a0 = h.enumeration();
             let a1 = h.float();
             let _ = unsafe { glMultiTexCoord1f(a0, a1) };
         }
-        361 => {
+        362 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glMultiTexCoord1fv(a0, a1) };
         }
-        362 => {
+        363 => {
             let a0 = h.enumeration();
             let a1 = h.double();
             let _ = unsafe { glMultiTexCoord1d(a0, a1) };
         }
-        363 => {
+        364 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glMultiTexCoord1dv(a0, a1) };
         }
-        364 => {
+        365 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLshort;
             let a2 = h.integer(IntClass::Any) as GLshort;
             let _ = unsafe { glMultiTexCoord2s(a0, a1, a2) };
         }
-        365 => {
+        366 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Shorts) as *const GLshort;
             let _ = unsafe { glMultiTexCoord2sv(a0, a1) };
         }
-        366 => {
+        367 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glMultiTexCoord2i(a0, a1, a2) };
         }
-        367 => {
+        368 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glMultiTexCoord2iv(a0, a1) };
         }
-        368 => {
+        369 => {
             let a0 = h.enumeration();
             let a1 = h.float();
             let a2 = h.float();
             let _ = unsafe { glMultiTexCoord2f(a0, a1, a2) };
         }
-        369 => {
+        370 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glMultiTexCoord2fv(a0, a1) };
         }
-        370 => {
+        371 => {
             let a0 = h.enumeration();
             let a1 = h.double();
             let a2 = h.double();
             let _ = unsafe { glMultiTexCoord2d(a0, a1, a2) };
         }
-        371 => {
+        372 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glMultiTexCoord2dv(a0, a1) };
         }
-        372 => {
+        373 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLshort;
             let a2 = h.integer(IntClass::Any) as GLshort;
             let a3 = h.integer(IntClass::Any) as GLshort;
             let _ = unsafe { glMultiTexCoord3s(a0, a1, a2, a3) };
         }
-        373 => {
+        374 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Shorts) as *const GLshort;
             let _ = unsafe { glMultiTexCoord3sv(a0, a1) };
         }
-        374 => {
+        375 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
             let a3 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glMultiTexCoord3i(a0, a1, a2, a3) };
         }
-        375 => {
+        376 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glMultiTexCoord3iv(a0, a1) };
         }
-        376 => {
+        377 => {
             let a0 = h.enumeration();
             let a1 = h.float();
             let a2 = h.float();
             let a3 = h.float();
             let _ = unsafe { glMultiTexCoord3f(a0, a1, a2, a3) };
         }
-        377 => {
+        378 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glMultiTexCoord3fv(a0, a1) };
         }
-        378 => {
+        379 => {
             let a0 = h.enumeration();
             let a1 = h.double();
             let a2 = h.double();
             let a3 = h.double();
             let _ = unsafe { glMultiTexCoord3d(a0, a1, a2, a3) };
         }
-        379 => {
+        380 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glMultiTexCoord3dv(a0, a1) };
         }
-        380 => {
+        381 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLshort;
             let a2 = h.integer(IntClass::Any) as GLshort;
@@ -3032,12 +3041,12 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.integer(IntClass::Any) as GLshort;
             let _ = unsafe { glMultiTexCoord4s(a0, a1, a2, a3, a4) };
         }
-        381 => {
+        382 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Shorts) as *const GLshort;
             let _ = unsafe { glMultiTexCoord4sv(a0, a1) };
         }
-        382 => {
+        383 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -3045,12 +3054,12 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glMultiTexCoord4i(a0, a1, a2, a3, a4) };
         }
-        383 => {
+        384 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glMultiTexCoord4iv(a0, a1) };
         }
-        384 => {
+        385 => {
             let a0 = h.enumeration();
             let a1 = h.float();
             let a2 = h.float();
@@ -3058,12 +3067,12 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.float();
             let _ = unsafe { glMultiTexCoord4f(a0, a1, a2, a3, a4) };
         }
-        385 => {
+        386 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glMultiTexCoord4fv(a0, a1) };
         }
-        386 => {
+        387 => {
             let a0 = h.enumeration();
             let a1 = h.double();
             let a2 = h.double();
@@ -3071,12 +3080,12 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.double();
             let _ = unsafe { glMultiTexCoord4d(a0, a1, a2, a3, a4) };
         }
-        387 => {
+        388 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glMultiTexCoord4dv(a0, a1) };
         }
-        388 => {
+        389 => {
             let a0 = h.integer(IntClass::Dimension) as GLsizei;
             let a1 = h.integer(IntClass::Dimension) as GLsizei;
             let a2 = h.enumeration();
@@ -3084,7 +3093,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glDrawPixels(a0, a1, a2, a3, a4) };
         }
-        389 => {
+        390 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Dimension) as GLsizei;
@@ -3094,7 +3103,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a6 = h.output_pointer(6) as *mut c_void;
             let _ = unsafe { glReadPixels(a0, a1, a2, a3, a4, a5, a6) };
         }
-        390 => {
+        391 => {
             let a0 = h.enumeration();
             let a1 = h.float();
             let a2 = h.float();
@@ -3103,7 +3112,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a5 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glMap1f(a0, a1, a2, a3, a4, a5) };
         }
-        391 => {
+        392 => {
             let a0 = h.enumeration();
             let a1 = h.float();
             let a2 = h.float();
@@ -3116,7 +3125,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a9 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glMap2f(a0, a1, a2, a3, a4, a5, a6, a7, a8, a9) };
         }
-        392 => {
+        393 => {
             let a0 = h.enumeration();
             let a1 = h.double();
             let a2 = h.double();
@@ -3125,7 +3134,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a5 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glMap1d(a0, a1, a2, a3, a4, a5) };
         }
-        393 => {
+        394 => {
             let a0 = h.enumeration();
             let a1 = h.double();
             let a2 = h.double();
@@ -3138,31 +3147,31 @@ pub fn call(h: &mut Harness, index: usize) {
             let a9 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glMap2d(a0, a1, a2, a3, a4, a5, a6, a7, a8, a9) };
         }
-        394 => {
+        395 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLfloat;
             let _ = unsafe { glGetMapfv(a0, a1, a2) };
         }
-        395 => {
+        396 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLdouble;
             let _ = unsafe { glGetMapdv(a0, a1, a2) };
         }
-        396 => {
+        397 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLint;
             let _ = unsafe { glGetMapiv(a0, a1, a2) };
         }
-        397 => {
+        398 => {
             let a0 = h.integer(IntClass::Dimension) as GLint;
             let a1 = h.float();
             let a2 = h.float();
             let _ = unsafe { glMapGrid1f(a0, a1, a2) };
         }
-        398 => {
+        399 => {
             let a0 = h.integer(IntClass::Dimension) as GLint;
             let a1 = h.float();
             let a2 = h.float();
@@ -3171,13 +3180,13 @@ pub fn call(h: &mut Harness, index: usize) {
             let a5 = h.float();
             let _ = unsafe { glMapGrid2f(a0, a1, a2, a3, a4, a5) };
         }
-        399 => {
+        400 => {
             let a0 = h.integer(IntClass::Dimension) as GLint;
             let a1 = h.double();
             let a2 = h.double();
             let _ = unsafe { glMapGrid1d(a0, a1, a2) };
         }
-        400 => {
+        401 => {
             let a0 = h.integer(IntClass::Dimension) as GLint;
             let a1 = h.double();
             let a2 = h.double();
@@ -3186,56 +3195,56 @@ pub fn call(h: &mut Harness, index: usize) {
             let a5 = h.double();
             let _ = unsafe { glMapGrid2d(a0, a1, a2, a3, a4, a5) };
         }
-        401 => {
+        402 => {
             let a0 = h.float();
             let _ = unsafe { glEvalCoord1f(a0) };
         }
-        402 => {
+        403 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glEvalCoord1fv(a0) };
         }
-        403 => {
+        404 => {
             let a0 = h.float();
             let a1 = h.float();
             let _ = unsafe { glEvalCoord2f(a0, a1) };
         }
-        404 => {
+        405 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glEvalCoord2fv(a0) };
         }
-        405 => {
+        406 => {
             let a0 = h.double();
             let _ = unsafe { glEvalCoord1d(a0) };
         }
-        406 => {
+        407 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glEvalCoord1dv(a0) };
         }
-        407 => {
+        408 => {
             let a0 = h.double();
             let a1 = h.double();
             let _ = unsafe { glEvalCoord2d(a0, a1) };
         }
-        408 => {
+        409 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glEvalCoord2dv(a0) };
         }
-        409 => {
+        410 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glEvalPoint1(a0) };
         }
-        410 => {
+        411 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let a1 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glEvalPoint2(a0, a1) };
         }
-        411 => {
+        412 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Dimension) as GLint;
             let a2 = h.integer(IntClass::Dimension) as GLint;
             let _ = unsafe { glEvalMesh1(a0, a1, a2) };
         }
-        412 => {
+        413 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Dimension) as GLint;
             let a2 = h.integer(IntClass::Dimension) as GLint;
@@ -3243,66 +3252,66 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.integer(IntClass::Dimension) as GLint;
             let _ = unsafe { glEvalMesh2(a0, a1, a2, a3, a4) };
         }
-        413 => {
+        414 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glLightx(a0, a1, a2) };
         }
-        414 => {
+        415 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Fixed) as *const GLfixed;
             let _ = unsafe { glLightxv(a0, a1, a2) };
         }
-        415 => {
+        416 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glMaterialx(a0, a1, a2) };
         }
-        416 => {
+        417 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Fixed) as *const GLfixed;
             let _ = unsafe { glMaterialxv(a0, a1, a2) };
         }
-        417 => {
+        418 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glLightModelx(a0, a1) };
         }
-        418 => {
+        419 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Fixed) as *const GLfixed;
             let _ = unsafe { glLightModelxv(a0, a1) };
-        }
-        419 => {
-            let a0 = h.enumeration();
-            let a1 = h.enumeration();
-            let a2 = h.output_pointer(2) as *mut GLfixed;
-            let _ = unsafe { glGetLightxv(a0, a1, a2) };
         }
         420 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLfixed;
-            let _ = unsafe { glGetMaterialxv(a0, a1, a2) };
+            let _ = unsafe { glGetLightxv(a0, a1, a2) };
         }
         421 => {
+            let a0 = h.enumeration();
+            let a1 = h.enumeration();
+            let a2 = h.output_pointer(2) as *mut GLfixed;
+            let _ = unsafe { glGetMaterialxv(a0, a1, a2) };
+        }
+        422 => {
             let a0 = h.integer(IntClass::Any) as GLfixed;
             let a1 = h.integer(IntClass::Any) as GLfixed;
             let a2 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glNormal3x(a0, a1, a2) };
         }
-        422 => {
+        423 => {
             let a0 = h.integer(IntClass::Any) as GLfixed;
             let a1 = h.integer(IntClass::Any) as GLfixed;
             let a2 = h.integer(IntClass::Any) as GLfixed;
             let a3 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glColor4x(a0, a1, a2, a3) };
         }
-        423 => {
+        424 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLfixed;
             let a2 = h.integer(IntClass::Any) as GLfixed;
@@ -3310,41 +3319,32 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glMultiTexCoord4x(a0, a1, a2, a3, a4) };
         }
-        424 => {
+        425 => {
             let a0 = h.integer(IntClass::Any) as GLfixed;
             let a1 = h.integer(IntClass::Any) as GLfixed;
             let a2 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glTranslatex(a0, a1, a2) };
         }
-        425 => {
+        426 => {
             let a0 = h.integer(IntClass::Any) as GLfixed;
             let a1 = h.integer(IntClass::Any) as GLfixed;
             let a2 = h.integer(IntClass::Any) as GLfixed;
             let a3 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glRotatex(a0, a1, a2, a3) };
         }
-        426 => {
+        427 => {
             let a0 = h.integer(IntClass::Any) as GLfixed;
             let a1 = h.integer(IntClass::Any) as GLfixed;
             let a2 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glScalex(a0, a1, a2) };
         }
-        427 => {
+        428 => {
             let a0 = h.input_pointer(Region::Fixed) as *const GLfixed;
             let _ = unsafe { glLoadMatrixx(a0) };
         }
-        428 => {
+        429 => {
             let a0 = h.input_pointer(Region::Fixed) as *const GLfixed;
             let _ = unsafe { glMultMatrixx(a0) };
-        }
-        429 => {
-            let a0 = h.integer(IntClass::Any) as GLfixed;
-            let a1 = h.integer(IntClass::Any) as GLfixed;
-            let a2 = h.integer(IntClass::Any) as GLfixed;
-            let a3 = h.integer(IntClass::Any) as GLfixed;
-            let a4 = h.integer(IntClass::Any) as GLfixed;
-            let a5 = h.integer(IntClass::Any) as GLfixed;
-            let _ = unsafe { glOrthox(a0, a1, a2, a3, a4, a5) };
         }
         430 => {
             let a0 = h.integer(IntClass::Any) as GLfixed;
@@ -3353,16 +3353,16 @@ pub fn call(h: &mut Harness, index: usize) {
             let a3 = h.integer(IntClass::Any) as GLfixed;
             let a4 = h.integer(IntClass::Any) as GLfixed;
             let a5 = h.integer(IntClass::Any) as GLfixed;
-            let _ = unsafe { glFrustumx(a0, a1, a2, a3, a4, a5) };
+            let _ = unsafe { glOrthox(a0, a1, a2, a3, a4, a5) };
         }
         431 => {
-            let a0 = h.float();
-            let a1 = h.float();
-            let a2 = h.float();
-            let a3 = h.float();
-            let a4 = h.float();
-            let a5 = h.float();
-            let _ = unsafe { glOrthof(a0, a1, a2, a3, a4, a5) };
+            let a0 = h.integer(IntClass::Any) as GLfixed;
+            let a1 = h.integer(IntClass::Any) as GLfixed;
+            let a2 = h.integer(IntClass::Any) as GLfixed;
+            let a3 = h.integer(IntClass::Any) as GLfixed;
+            let a4 = h.integer(IntClass::Any) as GLfixed;
+            let a5 = h.integer(IntClass::Any) as GLfixed;
+            let _ = unsafe { glFrustumx(a0, a1, a2, a3, a4, a5) };
         }
         432 => {
             let a0 = h.float();
@@ -3371,138 +3371,147 @@ pub fn call(h: &mut Harness, index: usize) {
             let a3 = h.float();
             let a4 = h.float();
             let a5 = h.float();
-            let _ = unsafe { glFrustumf(a0, a1, a2, a3, a4, a5) };
+            let _ = unsafe { glOrthof(a0, a1, a2, a3, a4, a5) };
         }
         433 => {
+            let a0 = h.float();
+            let a1 = h.float();
+            let a2 = h.float();
+            let a3 = h.float();
+            let a4 = h.float();
+            let a5 = h.float();
+            let _ = unsafe { glFrustumf(a0, a1, a2, a3, a4, a5) };
+        }
+        434 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Fixed) as *const GLfixed;
             let _ = unsafe { glClipPlanex(a0, a1) };
         }
-        434 => {
+        435 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glClipPlanef(a0, a1) };
         }
-        435 => {
+        436 => {
             let a0 = h.enumeration();
             let a1 = h.output_pointer(1) as *mut GLfixed;
             let _ = unsafe { glGetClipPlanex(a0, a1) };
         }
-        436 => {
+        437 => {
             let a0 = h.enumeration();
             let a1 = h.output_pointer(1) as *mut GLfloat;
             let _ = unsafe { glGetClipPlanef(a0, a1) };
         }
-        437 => {
+        438 => {
             let a0 = h.enumeration();
             let a1 = h.output_pointer(1) as *mut GLfixed;
             let _ = unsafe { glGetFixedv(a0, a1) };
         }
-        438 => {
+        439 => {
             let a0 = h.integer(IntClass::Count) as GLfixed;
             let _ = unsafe { glPointSizex(a0) };
         }
-        439 => {
+        440 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glPointParameterx(a0, a1) };
         }
-        440 => {
+        441 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Fixed) as *const GLfixed;
             let _ = unsafe { glPointParameterxv(a0, a1) };
         }
-        441 => {
+        442 => {
             let a0 = h.integer(IntClass::Dimension) as GLfixed;
             let _ = unsafe { glLineWidthx(a0) };
         }
-        442 => {
+        443 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glFogx(a0, a1) };
         }
-        443 => {
+        444 => {
             let a0 = h.enumeration();
             let a1 = h.input_pointer(Region::Fixed) as *const GLfixed;
             let _ = unsafe { glFogxv(a0, a1) };
         }
-        444 => {
+        445 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glTexEnvx(a0, a1, a2) };
         }
-        445 => {
+        446 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Fixed) as *const GLfixed;
             let _ = unsafe { glTexEnvxv(a0, a1, a2) };
         }
-        446 => {
+        447 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLfixed;
             let _ = unsafe { glGetTexEnvxv(a0, a1, a2) };
         }
-        447 => {
+        448 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glTexParameterx(a0, a1, a2) };
         }
-        448 => {
+        449 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Fixed) as *const GLfixed;
             let _ = unsafe { glTexParameterxv(a0, a1, a2) };
         }
-        449 => {
+        450 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLfixed;
             let _ = unsafe { glGetTexParameterxv(a0, a1, a2) };
         }
-        450 => {
+        451 => {
             let a0 = h.integer(IntClass::Any) as GLclampx;
             let a1 = h.integer(IntClass::Any) as GLclampx;
             let a2 = h.integer(IntClass::Any) as GLclampx;
             let a3 = h.integer(IntClass::Any) as GLclampx;
             let _ = unsafe { glClearColorx(a0, a1, a2, a3) };
         }
-        451 => {
+        452 => {
             let a0 = h.integer(IntClass::Dimension) as GLclampx;
             let _ = unsafe { glClearDepthx(a0) };
         }
-        452 => {
+        453 => {
             let a0 = h.float();
             let _ = unsafe { glClearDepthf(a0) };
         }
-        453 => {
+        454 => {
             let a0 = h.integer(IntClass::Any) as GLclampx;
             let a1 = h.integer(IntClass::Any) as GLclampx;
             let _ = unsafe { glDepthRangex(a0, a1) };
         }
-        454 => {
+        455 => {
             let a0 = h.float();
             let a1 = h.float();
             let _ = unsafe { glDepthRangef(a0, a1) };
         }
-        455 => {
+        456 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLclampx;
             let _ = unsafe { glAlphaFuncx(a0, a1) };
         }
-        456 => {
+        457 => {
             let a0 = h.integer(IntClass::Any) as GLfixed;
             let a1 = h.integer(IntClass::Any) as GLfixed;
             let _ = unsafe { glPolygonOffsetx(a0, a1) };
         }
-        457 => {
+        458 => {
             let a0 = h.integer(IntClass::Any) as GLclampx;
             let a1 = h.byte();
             let _ = unsafe { glSampleCoveragex(a0, a1) };
         }
-        458 => {
+        459 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Dimension) as GLsizei;
@@ -3511,7 +3520,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a5 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glColorTable(a0, a1, a2, a3, a4, a5) };
         }
-        459 => {
+        460 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Count) as GLsizei;
             let a2 = h.integer(IntClass::Count) as GLsizei;
@@ -3520,19 +3529,19 @@ pub fn call(h: &mut Harness, index: usize) {
             let a5 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glColorSubTable(a0, a1, a2, a3, a4, a5) };
         }
-        460 => {
+        461 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glColorTableParameterfv(a0, a1, a2) };
         }
-        461 => {
+        462 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glColorTableParameteriv(a0, a1, a2) };
         }
-        462 => {
+        463 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -3540,7 +3549,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.integer(IntClass::Dimension) as GLsizei;
             let _ = unsafe { glCopyColorTable(a0, a1, a2, a3, a4) };
         }
-        463 => {
+        464 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Count) as GLsizei;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -3548,26 +3557,26 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.integer(IntClass::Dimension) as GLsizei;
             let _ = unsafe { glCopyColorSubTable(a0, a1, a2, a3, a4) };
         }
-        464 => {
+        465 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.enumeration();
             let a3 = h.output_pointer(3) as *mut c_void;
             let _ = unsafe { glGetColorTable(a0, a1, a2, a3) };
         }
-        465 => {
+        466 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLfloat;
             let _ = unsafe { glGetColorTableParameterfv(a0, a1, a2) };
         }
-        466 => {
+        467 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLint;
             let _ = unsafe { glGetColorTableParameteriv(a0, a1, a2) };
         }
-        467 => {
+        468 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Dimension) as GLsizei;
@@ -3576,7 +3585,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a5 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glConvolutionFilter1D(a0, a1, a2, a3, a4, a5) };
         }
-        468 => {
+        469 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Dimension) as GLsizei;
@@ -3586,7 +3595,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a6 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glConvolutionFilter2D(a0, a1, a2, a3, a4, a5, a6) };
         }
-        469 => {
+        470 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Dimension) as GLsizei;
@@ -3597,7 +3606,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a7 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glSeparableFilter2D(a0, a1, a2, a3, a4, a5, a6, a7) };
         }
-        470 => {
+        471 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -3605,7 +3614,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.integer(IntClass::Dimension) as GLsizei;
             let _ = unsafe { glCopyConvolutionFilter1D(a0, a1, a2, a3, a4) };
         }
-        471 => {
+        472 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -3614,38 +3623,38 @@ pub fn call(h: &mut Harness, index: usize) {
             let a5 = h.integer(IntClass::Dimension) as GLsizei;
             let _ = unsafe { glCopyConvolutionFilter2D(a0, a1, a2, a3, a4, a5) };
         }
-        472 => {
+        473 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.float();
             let _ = unsafe { glConvolutionParameterf(a0, a1, a2) };
         }
-        473 => {
+        474 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glConvolutionParameteri(a0, a1, a2) };
         }
-        474 => {
+        475 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glConvolutionParameterfv(a0, a1, a2) };
         }
-        475 => {
+        476 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glConvolutionParameteriv(a0, a1, a2) };
         }
-        476 => {
+        477 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.enumeration();
             let a3 = h.output_pointer(3) as *mut c_void;
             let _ = unsafe { glGetConvolutionFilter(a0, a1, a2, a3) };
         }
-        477 => {
+        478 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.enumeration();
@@ -3654,30 +3663,30 @@ pub fn call(h: &mut Harness, index: usize) {
             let a5 = h.output_pointer(5) as *mut c_void;
             let _ = unsafe { glGetSeparableFilter(a0, a1, a2, a3, a4, a5) };
         }
-        478 => {
+        479 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLfloat;
             let _ = unsafe { glGetConvolutionParameterfv(a0, a1, a2) };
         }
-        479 => {
+        480 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLint;
             let _ = unsafe { glGetConvolutionParameteriv(a0, a1, a2) };
         }
-        480 => {
+        481 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Dimension) as GLsizei;
             let a2 = h.enumeration();
             let a3 = h.byte();
             let _ = unsafe { glHistogram(a0, a1, a2, a3) };
         }
-        481 => {
+        482 => {
             let a0 = h.enumeration();
             let _ = unsafe { glResetHistogram(a0) };
         }
-        482 => {
+        483 => {
             let a0 = h.enumeration();
             let a1 = h.byte();
             let a2 = h.enumeration();
@@ -3685,29 +3694,29 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.output_pointer(4) as *mut c_void;
             let _ = unsafe { glGetHistogram(a0, a1, a2, a3, a4) };
         }
-        483 => {
+        484 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLfloat;
             let _ = unsafe { glGetHistogramParameterfv(a0, a1, a2) };
         }
-        484 => {
+        485 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLint;
             let _ = unsafe { glGetHistogramParameteriv(a0, a1, a2) };
         }
-        485 => {
+        486 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.byte();
             let _ = unsafe { glMinmax(a0, a1, a2) };
         }
-        486 => {
+        487 => {
             let a0 = h.enumeration();
             let _ = unsafe { glResetMinmax(a0) };
         }
-        487 => {
+        488 => {
             let a0 = h.enumeration();
             let a1 = h.byte();
             let a2 = h.enumeration();
@@ -3715,199 +3724,199 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.output_pointer(4) as *mut c_void;
             let _ = unsafe { glGetMinmax(a0, a1, a2, a3, a4) };
         }
-        488 => {
+        489 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLfloat;
             let _ = unsafe { glGetMinmaxParameterfv(a0, a1, a2) };
         }
-        489 => {
+        490 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLint;
             let _ = unsafe { glGetMinmaxParameteriv(a0, a1, a2) };
         }
-        490 => {
+        491 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLfloat;
             let _ = unsafe { glGetLightfv(a0, a1, a2) };
         }
-        491 => {
+        492 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLint;
             let _ = unsafe { glGetLightiv(a0, a1, a2) };
         }
-        492 => {
+        493 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLfloat;
             let _ = unsafe { glGetMaterialfv(a0, a1, a2) };
         }
-        493 => {
+        494 => {
             let a0 = h.enumeration();
             let a1 = h.enumeration();
             let a2 = h.output_pointer(2) as *mut GLint;
             let _ = unsafe { glGetMaterialiv(a0, a1, a2) };
         }
-        494 => {
+        495 => {
             let a0 = h.enumeration();
             let _ = unsafe { glIsEnabled(a0) };
         }
-        495 => h.special("glCallLists"),
-        496 => h.special("glGetError"),
-        497 => {
+        496 => h.special("glCallLists"),
+        497 => h.special("glGetError"),
+        498 => {
             let a0 = h.enumeration();
             let a1 = h.output_pointer(1) as *mut GLboolean;
             let _ = unsafe { glGetBooleanv(a0, a1) };
         }
-        498 => {
+        499 => {
             let a0 = h.enumeration();
             let a1 = h.output_pointer(1) as *mut GLint;
             let _ = unsafe { glGetIntegerv(a0, a1) };
         }
-        499 => {
+        500 => {
             let a0 = h.enumeration();
             let a1 = h.output_pointer(1) as *mut GLfloat;
             let _ = unsafe { glGetFloatv(a0, a1) };
         }
-        500 => {
+        501 => {
             let a0 = h.enumeration();
             let a1 = h.output_pointer(1) as *mut GLdouble;
             let _ = unsafe { glGetDoublev(a0, a1) };
         }
-        501 => {
+        502 => {
             let a0 = h.enumeration();
             let _ = unsafe { glGetString(a0) };
         }
-        502 => {
+        503 => {
             let a0 = h.enumeration();
             let a1 = h.output_pointer(1) as *mut GLdouble;
             let _ = unsafe { glGetClipPlane(a0, a1) };
         }
-        503 => {
+        504 => {
             let a0 = h.integer(IntClass::Any) as GLshort;
             let a1 = h.integer(IntClass::Any) as GLshort;
             let _ = unsafe { glRasterPos2s(a0, a1) };
         }
-        504 => {
+        505 => {
             let a0 = h.input_pointer(Region::Shorts) as *const GLshort;
             let _ = unsafe { glRasterPos2sv(a0) };
         }
-        505 => {
+        506 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let a1 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glRasterPos2i(a0, a1) };
         }
-        506 => {
+        507 => {
             let a0 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glRasterPos2iv(a0) };
         }
-        507 => {
+        508 => {
             let a0 = h.float();
             let a1 = h.float();
             let _ = unsafe { glRasterPos2f(a0, a1) };
         }
-        508 => {
+        509 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glRasterPos2fv(a0) };
         }
-        509 => {
+        510 => {
             let a0 = h.double();
             let a1 = h.double();
             let _ = unsafe { glRasterPos2d(a0, a1) };
         }
-        510 => {
+        511 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glRasterPos2dv(a0) };
         }
-        511 => {
+        512 => {
             let a0 = h.integer(IntClass::Any) as GLshort;
             let a1 = h.integer(IntClass::Any) as GLshort;
             let a2 = h.integer(IntClass::Any) as GLshort;
             let _ = unsafe { glRasterPos3s(a0, a1, a2) };
         }
-        512 => {
+        513 => {
             let a0 = h.input_pointer(Region::Shorts) as *const GLshort;
             let _ = unsafe { glRasterPos3sv(a0) };
         }
-        513 => {
+        514 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glRasterPos3i(a0, a1, a2) };
         }
-        514 => {
+        515 => {
             let a0 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glRasterPos3iv(a0) };
         }
-        515 => {
+        516 => {
             let a0 = h.float();
             let a1 = h.float();
             let a2 = h.float();
             let _ = unsafe { glRasterPos3f(a0, a1, a2) };
         }
-        516 => {
+        517 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glRasterPos3fv(a0) };
         }
-        517 => {
+        518 => {
             let a0 = h.double();
             let a1 = h.double();
             let a2 = h.double();
             let _ = unsafe { glRasterPos3d(a0, a1, a2) };
         }
-        518 => {
+        519 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glRasterPos3dv(a0) };
         }
-        519 => {
+        520 => {
             let a0 = h.integer(IntClass::Any) as GLshort;
             let a1 = h.integer(IntClass::Any) as GLshort;
             let a2 = h.integer(IntClass::Any) as GLshort;
             let a3 = h.integer(IntClass::Any) as GLshort;
             let _ = unsafe { glRasterPos4s(a0, a1, a2, a3) };
         }
-        520 => {
+        521 => {
             let a0 = h.input_pointer(Region::Shorts) as *const GLshort;
             let _ = unsafe { glRasterPos4sv(a0) };
         }
-        521 => {
+        522 => {
             let a0 = h.integer(IntClass::Any) as GLint;
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
             let a3 = h.integer(IntClass::Any) as GLint;
             let _ = unsafe { glRasterPos4i(a0, a1, a2, a3) };
         }
-        522 => {
+        523 => {
             let a0 = h.input_pointer(Region::Ints) as *const GLint;
             let _ = unsafe { glRasterPos4iv(a0) };
         }
-        523 => {
+        524 => {
             let a0 = h.float();
             let a1 = h.float();
             let a2 = h.float();
             let a3 = h.float();
             let _ = unsafe { glRasterPos4f(a0, a1, a2, a3) };
         }
-        524 => {
+        525 => {
             let a0 = h.input_pointer(Region::Floats) as *const GLfloat;
             let _ = unsafe { glRasterPos4fv(a0) };
         }
-        525 => {
+        526 => {
             let a0 = h.double();
             let a1 = h.double();
             let a2 = h.double();
             let a3 = h.double();
             let _ = unsafe { glRasterPos4d(a0, a1, a2, a3) };
         }
-        526 => {
+        527 => {
             let a0 = h.input_pointer(Region::Doubles) as *const GLdouble;
             let _ = unsafe { glRasterPos4dv(a0) };
         }
-        527 => h.special("glSelectBuffer"),
-        528 => {
+        528 => h.special("glSelectBuffer"),
+        529 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -3918,7 +3927,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a7 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glTexImage1D(a0, a1, a2, a3, a4, a5, a6, a7) };
         }
-        529 => {
+        530 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -3930,7 +3939,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a8 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glTexImage2D(a0, a1, a2, a3, a4, a5, a6, a7, a8) };
         }
-        530 => {
+        531 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -3943,7 +3952,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a9 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glTexImage3D(a0, a1, a2, a3, a4, a5, a6, a7, a8, a9) };
         }
-        531 => {
+        532 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -3953,7 +3962,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a6 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glTexSubImage1D(a0, a1, a2, a3, a4, a5, a6) };
         }
-        532 => {
+        533 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -3965,7 +3974,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a8 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glTexSubImage2D(a0, a1, a2, a3, a4, a5, a6, a7, a8) };
         }
-        533 => {
+        534 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -3979,7 +3988,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a10 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glTexSubImage3D(a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10) };
         }
-        534 => {
+        535 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.enumeration();
@@ -3987,7 +3996,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a4 = h.output_pointer(4) as *mut c_void;
             let _ = unsafe { glGetTexImage(a0, a1, a2, a3, a4) };
         }
-        535 => {
+        536 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.enumeration();
@@ -3997,7 +4006,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a6 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glCompressedTexImage1D(a0, a1, a2, a3, a4, a5, a6) };
         }
-        536 => {
+        537 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.enumeration();
@@ -4008,7 +4017,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a7 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glCompressedTexImage2D(a0, a1, a2, a3, a4, a5, a6, a7) };
         }
-        537 => {
+        538 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.enumeration();
@@ -4020,7 +4029,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a8 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glCompressedTexImage3D(a0, a1, a2, a3, a4, a5, a6, a7, a8) };
         }
-        538 => {
+        539 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -4030,7 +4039,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a6 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glCompressedTexSubImage1D(a0, a1, a2, a3, a4, a5, a6) };
         }
-        539 => {
+        540 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -4042,7 +4051,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a8 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glCompressedTexSubImage2D(a0, a1, a2, a3, a4, a5, a6, a7, a8) };
         }
-        540 => {
+        541 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.integer(IntClass::Any) as GLint;
@@ -4056,7 +4065,7 @@ pub fn call(h: &mut Harness, index: usize) {
             let a10 = h.input_pointer(Region::Any) as *const c_void;
             let _ = unsafe { glCompressedTexSubImage3D(a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10) };
         }
-        541 => {
+        542 => {
             let a0 = h.enumeration();
             let a1 = h.integer(IntClass::Any) as GLint;
             let a2 = h.output_pointer(2) as *mut c_void;

@@ -29,6 +29,7 @@ use crate::commands::list::Command;
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
+use crate::pipeline::units::EXTRA_UNITS;
 use crate::state::arrays::{ARRAY_KINDS, ByteSpan};
 
 /// The enabled arrays' bytes at `spans`, starting with element `base`.
@@ -36,9 +37,14 @@ use crate::state::arrays::{ARRAY_KINDS, ByteSpan};
 /// # Safety
 /// Each span must lie in memory that stays readable for `'a` (the application's arrays
 /// hold the elements the draw uses).
-unsafe fn sources<'a>(base: usize, spans: &[Option<ByteSpan>; ARRAY_KINDS]) -> ArraySources<'a> {
+unsafe fn sources<'a>(
+    base: usize,
+    spans: &[Option<ByteSpan>; ARRAY_KINDS],
+    unit_spans: &[Option<ByteSpan>; EXTRA_UNITS],
+) -> ArraySources<'a> {
     let mut sources = ArraySources::new(base);
-    for (bytes, span) in sources.bytes.iter_mut().zip(spans) {
+    let slots = sources.bytes.iter_mut().chain(&mut sources.unit_bytes);
+    for (bytes, span) in slots.zip(spans.iter().chain(unit_spans)) {
         if let Some(span) = span {
             // SAFETY: the caller guarantees the span is readable; `VertexArrays::spans`
             // rejected NULL addresses and lengths beyond isize::MAX.
@@ -57,7 +63,7 @@ unsafe fn draw(ctx: &mut Context, mode: GLenum, indices: GlResult<ElementIndices
     let prepared = indices.and_then(|indices| {
         let sources = match ctx.array_spans(&indices)? {
             // SAFETY: forwarded from the caller.
-            Some((base, spans)) => unsafe { sources(base, &spans) },
+            Some((base, spans, unit_spans)) => unsafe { sources(base, &spans, &unit_spans) },
             // Nothing is read; the call still validates as a draw.
             None => ArraySources::default(),
         };
@@ -173,8 +179,9 @@ pub unsafe extern "C" fn glArrayElement(i: GLint) {
     with_context(|ctx| {
         let element = ctx.check_array_element(i).and_then(|index| {
             let spans = ctx.vertex_arrays().spans(index, index)?;
+            let unit_spans = ctx.vertex_arrays().unit_spans(index, index)?;
             // SAFETY: forwarded from the caller.
-            let sources = unsafe { sources(index, &spans) };
+            let sources = unsafe { sources(index, &spans, &unit_spans) };
             ctx.array_element_values(index, &sources)
         });
         ctx.record_or_run(element.map_or_else(Command::Error, Command::ArrayElement))

@@ -1,5 +1,6 @@
 //! fflight's capture API: fflCaptureBegin, fflCaptureEnd, fflCaptureVertexCount,
-//! fflCapturePrimitiveCount, fflCaptureReadVertices, fflCaptureReadPrimitives and the bulk
+//! fflCapturePrimitiveCount, fflCaptureReadVertices, fflCaptureReadPrimitives,
+//! fflCaptureReadTexCoords (every texture unit's coordinates) and the bulk
 //! lighting call fflLightVertices (see `commands::capture` and `pipeline::capture`).
 
 use glam::{Vec3, Vec4};
@@ -11,10 +12,12 @@ use crate::gl::*;
 use crate::pipeline::block::OutputBlock;
 use crate::pipeline::capture::CapturedPrimitive;
 use crate::pipeline::vertex::ProcessedVertex;
+use crate::state::texture::MAX_TEXTURE_UNITS;
 
 /// One captured vertex: positions in eye and clip coordinates, the lit colors of both faces
-/// (without two-sided lighting the back colors equal the front ones), the texture
-/// coordinate after the texture matrix, and the edge flag it was given.
+/// (without two-sided lighting the back colors equal the front ones), texture unit 0's
+/// coordinates after generation and the texture matrix (fflCaptureReadTexCoords reads every
+/// unit's), and the edge flag it was given.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct FflCapturedVertex {
@@ -168,6 +171,50 @@ pub unsafe extern "C" fn fflCaptureReadPrimitives(
 ) -> GLuint {
     // SAFETY: forwarded from the caller.
     with_context(|ctx| unsafe { copy_out(ctx.captured().primitives(), first, count, primitives) })
+}
+
+/// Copies texture unit `texture`'s coordinates (after that unit's coordinate generation and
+/// texture matrix) of captured vertices `first..first + count` (fewer at the end) to
+/// `coords`, 4 floats per vertex, and returns how many vertices were copied. Unit 0's are the
+/// `tex_coord` of fflCaptureReadVertices. GL_INVALID_ENUM (nothing copied) unless `texture`
+/// is GL_TEXTUREi of a unit (i below GL_MAX_TEXTURE_UNITS); NULL `coords` with a positive
+/// count is GL_INVALID_VALUE.
+///
+/// # Safety
+/// `coords` is NULL or has room for `4 * count` floats.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fflCaptureReadTexCoords(
+    texture: GLenum,
+    first: GLuint,
+    count: GLuint,
+    coords: *mut GLfloat,
+) -> GLuint {
+    with_context(|ctx| {
+        let unit = texture.wrapping_sub(GL_TEXTURE0) as usize;
+        if unit >= MAX_TEXTURE_UNITS {
+            return Err(GlError::InvalidEnum);
+        }
+        let capture = ctx.captured();
+        let first = first as usize;
+        let copied = (capture.vertices().len().saturating_sub(first)).min(count as usize);
+        if copied == 0 {
+            return Ok(0);
+        }
+        if coords.is_null() {
+            return Err(GlError::InvalidValue);
+        }
+        for k in 0..copied {
+            let value = capture.tex_coord(first + k, unit).unwrap_or(Vec4::W);
+            // SAFETY: the caller guarantees room for `4 * count` floats; k < count.
+            unsafe {
+                coords
+                    .add(4 * k)
+                    .cast::<[GLfloat; 4]>()
+                    .write_unaligned(value.to_array())
+            };
+        }
+        Ok(gl_uint(copied))
+    })
 }
 
 /// `len` bytes at `ptr`, or `None` for NULL.

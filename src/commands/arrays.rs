@@ -24,6 +24,7 @@ use crate::lighting::lanes::LANES;
 use crate::pipeline::block::InputBlock;
 use crate::pipeline::fetch::ArrayFetch;
 use crate::pipeline::parallel::light_in_order;
+use crate::pipeline::units::EXTRA_UNITS;
 use crate::state::arrays::{ARRAY_KINDS, ArrayKind, ByteSpan, ClientArray, VertexArrays};
 use crate::threads::threads_for;
 
@@ -167,6 +168,9 @@ pub struct ArraySources<'a> {
     pub base: usize,
     /// Each array's bytes by `ArrayKind`, empty for the arrays that are not read.
     pub bytes: [&'a [u8]; ARRAY_KINDS],
+    /// Texture units 1 and up's texture coordinate arrays' bytes (by unit - 1), read for
+    /// capture; `bytes[ArrayKind::TexCoord]` is unit 0's.
+    pub unit_bytes: [&'a [u8]; EXTRA_UNITS],
 }
 
 impl<'a> ArraySources<'a> {
@@ -184,7 +188,28 @@ impl<'a> ArraySources<'a> {
         ArraySources {
             base,
             bytes: [&[]; ARRAY_KINDS],
+            unit_bytes: [&[]; EXTRA_UNITS],
         }
+    }
+
+    /// These sources with `bytes` for texture unit `unit`'s texture coordinate array.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ArraySources, state::arrays::ArrayKind};
+    /// let bytes = [0u8; 8];
+    /// let sources = ArraySources::new(0).with_unit(2, &bytes);
+    /// assert_eq!(sources.unit_bytes[1].len(), 8);
+    /// let sources = sources.with_unit(0, &bytes); // unit 0's is the ArrayKind::TexCoord slot
+    /// assert_eq!(sources.bytes[ArrayKind::TexCoord as usize].len(), 8);
+    /// ```
+    pub fn with_unit(mut self, unit: usize, bytes: &'a [u8]) -> ArraySources<'a> {
+        match unit {
+            0 => self.bytes[ArrayKind::TexCoord as usize] = bytes,
+            _ => self.unit_bytes[unit - 1] = bytes,
+        }
+        self
     }
 
     /// These sources with `bytes` for the array `kind`.
@@ -204,7 +229,7 @@ impl<'a> ArraySources<'a> {
 }
 
 /// What the enabled arrays give one element; `None` for an array that is not enabled.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct ArrayElementValues {
     position: Option<Vec4>,
     normal: Option<Vec3>,
@@ -214,11 +239,16 @@ pub struct ArrayElementValues {
     secondary_color: Option<[f32; 3]>,
     fog_coord: Option<f32>,
     index: Option<f32>,
+    /// Texture units 1 and up's (by unit - 1); `None` when none of their arrays is enabled
+    /// (boxed: display lists keep many elements).
+    unit_tex_coords: Option<Box<[Option<Vec4>; EXTRA_UNITS]>>,
 }
 
 /// Decodes elements of the enabled arrays from sources checked to hold them.
 struct ArrayReader<'a> {
     arrays: [Option<(&'a ClientArray, &'a [u8])>; ARRAY_KINDS],
+    /// Texture units 1 and up's texture coordinate arrays.
+    units: [Option<(&'a ClientArray, &'a [u8])>; EXTRA_UNITS],
     base: usize,
 }
 
@@ -232,18 +262,25 @@ impl<'a> ArrayReader<'a> {
     ) -> GlResult<ArrayReader<'a>> {
         let mut reader = ArrayReader {
             arrays: [None; ARRAY_KINDS],
+            units: [None; EXTRA_UNITS],
             base: sources.base,
         };
         if first < sources.base {
             return Err(GlError::InvalidOperation);
         }
+        let holding =
+            |array: &'a ClientArray, bytes: &'a [u8]| match array.span_len(sources.base, last) {
+                Some(len) if len <= bytes.len() => Ok(Some((array, bytes))),
+                _ => Err(GlError::InvalidOperation),
+            };
         for (kind, array) in arrays.enabled() {
-            let bytes = sources.bytes[kind as usize];
-            match array.span_len(sources.base, last) {
-                Some(len) if len <= bytes.len() => {}
-                _ => return Err(GlError::InvalidOperation),
+            reader.arrays[kind as usize] = holding(array, sources.bytes[kind as usize])?;
+        }
+        let units = arrays.enabled_unit_arrays();
+        for ((unit, array), bytes) in reader.units.iter_mut().zip(units).zip(sources.unit_bytes) {
+            if let Some(array) = array {
+                *unit = holding(array, bytes)?;
             }
-            reader.arrays[kind as usize] = Some((array, bytes));
         }
         Ok(reader)
     }
@@ -251,6 +288,34 @@ impl<'a> ArrayReader<'a> {
     fn read(&self, kind: ArrayKind, index: usize) -> Option<[f32; 4]> {
         let (array, bytes) = self.arrays[kind as usize]?;
         Some(array.read(kind, bytes, self.base, index))
+    }
+
+    /// Texture unit `k + 1`'s coordinates of element `index`.
+    fn read_unit(&self, k: usize, index: usize) -> Option<Vec4> {
+        let (array, bytes) = self.units[k]?;
+        let coords = array.read(ArrayKind::TexCoord, bytes, self.base, index);
+        Some(Vec4::from_array(coords))
+    }
+
+    /// Appends to the capture texture units 1 and up's coordinates of each vertex of a
+    /// draw of `indices` that was just captured (`pipeline::units`): each unit's array
+    /// element, or its current coordinates, through its generation and texture matrix.
+    fn capture_units(&self, ctx: &mut Context, indices: &ElementIndices) {
+        let transforms = ctx.unit_transforms();
+        let current = ctx.current;
+        indices.for_each(|index| {
+            let object = self.read(ArrayKind::Vertex, index).map(Vec4::from_array);
+            let normal = self.read(ArrayKind::Normal, index);
+            let given = std::array::from_fn(|k| {
+                self.read_unit(k, index)
+                    .unwrap_or(current.other_tex_coords[k])
+            });
+            ctx.capture.push_units(&transforms.process(
+                object.unwrap_or(Vec4::W),
+                normal.map_or(current.normal, |n| Vec3::new(n[0], n[1], n[2])),
+                &given,
+            ));
+        });
     }
 
     fn element(&self, index: usize) -> ArrayElementValues {
@@ -267,6 +332,11 @@ impl<'a> ArrayReader<'a> {
                 .map(|c| [c[0], c[1], c[2]]),
             fog_coord: self.read(ArrayKind::FogCoord, index).map(|f| f[0]),
             index: self.read(ArrayKind::Index, index).map(|i| i[0]),
+            unit_tex_coords: self
+                .units
+                .iter()
+                .any(Option::is_some)
+                .then(|| Box::new(std::array::from_fn(|k| self.read_unit(k, index)))),
         }
     }
 }
@@ -279,6 +349,8 @@ pub struct RecordedDraw {
     mode: GLenum,
     base: usize,
     arrays: [Option<(ClientArray, Vec<u8>)>; ARRAY_KINDS],
+    /// Texture units 1 and up's texture coordinate arrays (read for capture).
+    units: [Option<(ClientArray, Vec<u8>)>; EXTRA_UNITS],
     indices: RecordedIndices,
 }
 
@@ -711,7 +783,8 @@ impl Context {
         self.check_draw_elements(mode, count, index_type)
     }
 
-    /// Which bytes of each enabled array a draw of `indices` reads, and the first index they
+    /// Which bytes of each enabled array (then of texture units 1 and up's enabled texture
+    /// coordinate arrays, by unit - 1) a draw of `indices` reads, and the first index they
     /// start with; `None` when the draw reads nothing (no indices, or the vertex array is
     /// disabled: then no vertex is made, §2.8). A NULL pointer among the enabled arrays is
     /// GL_INVALID_OPERATION: GL leaves it undefined, fflight draws nothing.
@@ -723,16 +796,24 @@ impl Context {
     /// let mut ctx = Context::new();
     /// ctx.vertex_pointer(3, GL_FLOAT, 0, 0x1000)?;
     /// ctx.client_state(GL_VERTEX_ARRAY, true)?;
-    /// let (first, spans) = ctx.array_spans(&ElementIndices::Sequential { first: 2, count: 2 })?.unwrap();
+    /// let (first, spans, unit_spans) = ctx.array_spans(&ElementIndices::Sequential { first: 2, count: 2 })?.unwrap();
     /// let vertices = spans[ArrayKind::Vertex as usize].unwrap();
     /// // Elements 2 and 3: 24 bytes from element 2 on.
     /// assert_eq!((first, vertices.address, vertices.len), (2, 0x1000 + 24, 24));
+    /// assert!(unit_spans.iter().all(Option::is_none)); // no array of texture units 1 and up
     /// # Ok::<(), fflight::GlError>(())
     /// ```
+    #[allow(clippy::type_complexity)]
     pub fn array_spans(
         &self,
         indices: &ElementIndices,
-    ) -> GlResult<Option<(usize, [Option<ByteSpan>; ARRAY_KINDS])>> {
+    ) -> GlResult<
+        Option<(
+            usize,
+            [Option<ByteSpan>; ARRAY_KINDS],
+            [Option<ByteSpan>; EXTRA_UNITS],
+        )>,
+    > {
         // Without the vertex array not even the indices are read.
         if !self.arrays.get(ArrayKind::Vertex).enabled {
             return Ok(None);
@@ -740,7 +821,8 @@ impl Context {
         let Some((first, last)) = indices.range() else {
             return Ok(None);
         };
-        Ok(Some((first, self.arrays.spans(first, last)?)))
+        let spans = self.arrays.spans(first, last)?;
+        Ok(Some((first, spans, self.arrays.unit_spans(first, last)?)))
     }
 
     /// glArrayElement (§2.8) from the arrays' bytes: the same as the glEdgeFlag,
@@ -807,6 +889,11 @@ impl Context {
         }
         if let Some(tex_coord) = element.tex_coord {
             self.tex_coord(tex_coord);
+        }
+        for (unit, tex_coord) in (1..).zip(element.unit_tex_coords.iter().flat_map(|t| t.iter())) {
+            if let Some(tex_coord) = tex_coord {
+                self.current.set_unit_tex_coord(unit, *tex_coord);
+            }
         }
         if let Some(color) = element.color {
             self.color(color);
@@ -881,6 +968,9 @@ impl Context {
         let reader = ArrayReader::new(&arrays, &sources, first, last)?;
         let fetch = ArrayFetch::new(reader.base, reader.arrays);
         self.draw_arrays_with(mode, &fetch, indices);
+        if self.capture.is_active() {
+            reader.capture_units(self, indices);
+        }
         Ok(())
     }
 
@@ -920,6 +1010,7 @@ impl Context {
             mode,
             base: 0,
             arrays: Default::default(),
+            units: Default::default(),
             indices: match *indices {
                 ElementIndices::Sequential { first, count } => {
                     RecordedIndices::Sequential { first, count }
@@ -938,12 +1029,14 @@ impl Context {
         let sources = with_stores(&arrays, sources, &stores);
         let reader = ArrayReader::new(&arrays, &sources, first, last)?;
         draw.base = reader.base;
-        for (copy, array) in draw.arrays.iter_mut().zip(reader.arrays) {
-            *copy = array.map(|(array, bytes)| {
+        let copy = |array: Option<(&ClientArray, &[u8])>| {
+            array.map(|(array, bytes)| {
                 let len = array.span_len(reader.base, last).unwrap_or(0);
                 (*array, bytes[..len].to_vec())
-            });
-        }
+            })
+        };
+        draw.arrays = reader.arrays.map(copy);
+        draw.units = reader.units.map(copy);
         Ok(draw)
     }
 
@@ -959,13 +1052,19 @@ impl Context {
         {
             return Ok(());
         }
-        let arrays = std::array::from_fn(|k| {
-            draw.arrays[k]
-                .as_ref()
-                .map(|(array, bytes)| (array, &bytes[..]))
-        });
-        let fetch = ArrayFetch::new(draw.base, arrays);
+        fn borrow(copy: &Option<(ClientArray, Vec<u8>)>) -> Option<(&ClientArray, &[u8])> {
+            copy.as_ref().map(|(array, bytes)| (array, &bytes[..]))
+        }
+        let reader = ArrayReader {
+            arrays: std::array::from_fn(|k| borrow(&draw.arrays[k])),
+            units: std::array::from_fn(|k| borrow(&draw.units[k])),
+            base: draw.base,
+        };
+        let fetch = ArrayFetch::new(draw.base, reader.arrays);
         self.draw_arrays_with(draw.mode, &fetch, &indices);
+        if self.capture.is_active() {
+            reader.capture_units(self, &indices);
+        }
         Ok(())
     }
 

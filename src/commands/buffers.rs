@@ -9,11 +9,16 @@ use crate::commands::arrays::ArraySources;
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
-use crate::state::arrays::{ALL_KINDS, ARRAY_KINDS, VertexArrays};
+use crate::state::arrays::{ALL_KINDS, ARRAY_KINDS, ClientArray, VertexArrays};
 use crate::state::buffers::check_target;
+use crate::state::texture::MAX_TEXTURE_UNITS;
 
-/// The stores of the enabled arrays sourced from buffer objects, held for one draw.
-pub type ArrayStores = [Option<Arc<Vec<u8>>>; ARRAY_KINDS];
+/// The stores of the enabled arrays sourced from buffer objects, held for one draw: by
+/// `ArrayKind`, then texture units 1 and up's texture coordinate arrays (by unit - 1).
+pub type ArrayStores = (
+    [Option<Arc<Vec<u8>>>; ARRAY_KINDS],
+    [Option<Arc<Vec<u8>>>; MAX_TEXTURE_UNITS - 1],
+);
 
 impl Context {
     /// The buffer object name bound to `target` (0 if none): GL_INVALID_ENUM for another
@@ -269,7 +274,12 @@ impl Context {
     pub(crate) fn array_stores(&self, arrays: &VertexArrays) -> GlResult<ArrayStores> {
         let mut stores = ArrayStores::default();
         for (kind, array) in arrays.enabled() {
-            stores[kind as usize] = self.buffers.store_for_draw(array.buffer)?;
+            stores.0[kind as usize] = self.buffers.store_for_draw(array.buffer)?;
+        }
+        for (store, array) in stores.1.iter_mut().zip(arrays.enabled_unit_arrays()) {
+            if let Some(array) = array {
+                *store = self.buffers.store_for_draw(array.buffer)?;
+            }
         }
         Ok(stores)
     }
@@ -303,14 +313,22 @@ pub(crate) fn with_stores<'a>(
     stores: &'a ArrayStores,
 ) -> ArraySources<'a> {
     let mut sources = *sources;
-    for (kind, store) in ALL_KINDS.into_iter().zip(stores) {
-        let Some(store) = store else { continue };
-        let array = arrays.drawn(kind);
-        let start = sources
-            .base
+    let base = sources.base;
+    let from_store = |array: &ClientArray, store: &'a Arc<Vec<u8>>| -> &'a [u8] {
+        let start = base
             .checked_mul(array.effective_stride())
             .and_then(|offset| offset.checked_add(array.address));
-        sources.bytes[kind as usize] = start.and_then(|start| store.get(start..)).unwrap_or(&[]);
+        start.and_then(|start| store.get(start..)).unwrap_or(&[])
+    };
+    for (kind, store) in ALL_KINDS.into_iter().zip(&stores.0) {
+        if let Some(store) = store {
+            sources.bytes[kind as usize] = from_store(arrays.drawn(kind), store);
+        }
+    }
+    for (unit, store) in (1..).zip(&stores.1) {
+        if let Some(store) = store {
+            sources.unit_bytes[unit - 1] = from_store(arrays.unit_tex_coords(unit), store);
+        }
     }
     sources
 }

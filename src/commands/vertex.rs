@@ -209,9 +209,11 @@ impl Context {
             return Err(GlError::InvalidEnum);
         }
         let stream = self.begin_stream(mode);
+        let units = self.pending_units();
         self.primitive = Some(Box::new(PrimitiveInProgress {
             pending: InputBlock::default(),
             stream,
+            units,
         }));
         Ok(())
     }
@@ -265,6 +267,9 @@ impl Context {
         let Some(primitive) = &mut self.primitive else {
             return;
         };
+        if let Some(units) = &mut primitive.units {
+            units.set(primitive.pending.len, &self.current.other_tex_coords);
+        }
         primitive.pending.push(object, &self.current);
         if primitive.pending.is_full() {
             self.flush_vertices();
@@ -281,6 +286,9 @@ impl Context {
         if primitive.pending.len > 0 {
             let derived = self.shared_derived();
             self.stream_block(&mut primitive.stream, &derived, &primitive.pending);
+            if let Some(units) = &primitive.units {
+                units.capture_block(&primitive.pending, &mut self.capture);
+            }
             primitive.pending.len = 0;
         }
         self.primitive = Some(primitive);

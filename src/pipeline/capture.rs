@@ -8,10 +8,14 @@
 //! (`assembly::assemble` decides both), a segment or triangle's provoking vertex is its last.
 //! Capture only observes: glRenderMode(GL_FEEDBACK) still gets its tokens.
 
+use glam::Vec4;
+
 use super::VertexWindow;
 use super::assembly::Primitive;
+use super::units::UnitCoords;
 use super::vertex::ProcessedVertex;
 use crate::gl::*;
+use crate::state::texture::MAX_TEXTURE_UNITS;
 
 /// One captured point, segment or triangle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -105,6 +109,11 @@ pub struct Capture {
     draws: usize,
     vertices: Vec<ProcessedVertex>,
     primitives: Vec<CapturedPrimitive>,
+    /// Texture units 1 and up's coordinates of the vertices, in runs: `(first, coords)` holds
+    /// for vertices `first` up to the next run's first (most draws need one run).
+    unit_runs: Vec<(usize, UnitCoords)>,
+    /// How many vertices `unit_runs` covers.
+    unit_vertices: usize,
 }
 
 impl Capture {
@@ -183,6 +192,44 @@ impl Capture {
         &self.vertices
     }
 
+    /// Texture unit `unit`'s coordinates of captured vertex `vertex`, after that unit's
+    /// coordinate generation and texture matrix (unit 0's are `vertices()[vertex].tex_coord`);
+    /// `None` past the vertices or the units (GL_MAX_TEXTURE_UNITS).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, Context};
+    /// use glam::Vec4;
+    /// let mut ctx = Context::new();
+    /// ctx.capture_begin()?;
+    /// ctx.begin(GL_POINTS)?;
+    /// ctx.multi_tex_coord(GL_TEXTURE0, Vec4::new(0.5, 0.0, 0.0, 1.0))?;
+    /// ctx.multi_tex_coord(GL_TEXTURE3, Vec4::new(0.0, 0.25, 0.0, 1.0))?;
+    /// ctx.vertex(Vec4::W);
+    /// ctx.end()?;
+    /// let capture = ctx.captured();
+    /// assert_eq!(capture.tex_coord(0, 0), Some(Vec4::new(0.5, 0.0, 0.0, 1.0)));
+    /// assert_eq!(capture.tex_coord(0, 3), Some(Vec4::new(0.0, 0.25, 0.0, 1.0)));
+    /// assert_eq!(capture.tex_coord(0, 1), Some(Vec4::W)); // the initial (0, 0, 0, 1)
+    /// assert_eq!(capture.tex_coord(0, 8), None);
+    /// assert_eq!(capture.tex_coord(1, 0), None);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
+    pub fn tex_coord(&self, vertex: usize, unit: usize) -> Option<Vec4> {
+        let captured = self.vertices.get(vertex)?;
+        match unit {
+            0 => Some(captured.tex_coord),
+            1..MAX_TEXTURE_UNITS => {
+                let runs = self
+                    .unit_runs
+                    .partition_point(|&(first, _)| first <= vertex);
+                Some(self.unit_runs.get(runs.checked_sub(1)?)?.1[unit - 1])
+            }
+            _ => None,
+        }
+    }
+
     /// The captured primitives, in draw order.
     ///
     /// # Examples
@@ -243,6 +290,15 @@ impl Capture {
     /// The draw's next vertex.
     pub(crate) fn push_vertex(&mut self, vertex: &ProcessedVertex) {
         self.vertices.push(*vertex);
+    }
+
+    /// Texture units 1 and up's coordinates of the next vertex (vertex `n` gets the `n`th
+    /// call's: every path that captures a vertex makes one call for it).
+    pub(crate) fn push_units(&mut self, coords: &UnitCoords) {
+        if self.unit_runs.last().is_none_or(|(_, last)| last != coords) {
+            self.unit_runs.push((self.unit_vertices, *coords));
+        }
+        self.unit_vertices += 1;
     }
 
     /// A primitive of `draw`, whose vertices `window` holds.

@@ -12,6 +12,7 @@ pub mod feedback;
 pub mod fetch;
 pub mod parallel;
 pub mod select;
+pub mod units;
 pub mod vertex;
 pub mod vertex_cache;
 

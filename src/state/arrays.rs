@@ -190,6 +190,24 @@ impl ClientArray {
         }
     }
 
+    /// Where elements `first..=last` are in client memory (`None` for an array in a buffer
+    /// object): see `VertexArrays::spans`.
+    fn client_span(&self, first: usize, last: usize) -> GlResult<Option<ByteSpan>> {
+        if self.buffer != 0 {
+            return Ok(None);
+        }
+        if self.address == 0 {
+            return Err(GlError::InvalidOperation);
+        }
+        let (address, len) = first
+            .checked_mul(self.effective_stride())
+            .and_then(|offset| self.address.checked_add(offset))
+            .zip(self.span_len(first, last))
+            .filter(|&(address, len)| address.checked_add(len).is_some())
+            .ok_or(GlError::InvalidValue)?;
+        Ok(Some(ByteSpan { address, len }))
+    }
+
     /// Bytes one element occupies.
     ///
     /// # Examples
@@ -330,8 +348,8 @@ pub struct ByteSpan {
 pub struct VertexArrays {
     /// The arrays draws read; the texture coordinate array is texture unit 0's.
     arrays: [ClientArray; ARRAY_KINDS],
-    /// Texture units 1 and up's texture coordinate arrays: kept and queried, not drawn (only
-    /// unit 0's coordinates reach feedback).
+    /// Texture units 1 and up's texture coordinate arrays: draws read them for capture only
+    /// (feedback reports unit 0's coordinates, §5.3).
     other_tex_coords: [ClientArray; MAX_TEXTURE_UNITS - 1],
     /// GL_CLIENT_ACTIVE_TEXTURE - GL_TEXTURE0: the unit whose texture coordinate array
     /// glTexCoordPointer, glEnableClientState and the array queries address (§2.8).
@@ -561,20 +579,77 @@ impl VertexArrays {
     /// ```
     pub fn spans(&self, first: usize, last: usize) -> GlResult<[Option<ByteSpan>; ARRAY_KINDS]> {
         let mut spans = [None; ARRAY_KINDS];
-        for (kind, array) in self.enabled().filter(|(_, array)| array.buffer == 0) {
-            if array.address == 0 {
-                return Err(GlError::InvalidOperation);
+        for (kind, array) in self.enabled() {
+            spans[kind as usize] = array.client_span(first, last)?;
+        }
+        Ok(spans)
+    }
+
+    /// Texture unit `unit`'s texture coordinate array (§2.8: glClientActiveTexture selects
+    /// which one glTexCoordPointer sets), whatever the client active unit.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::{ArrayKind, VertexArrays}};
+    /// let mut arrays = VertexArrays::default();
+    /// arrays.set_client_active_texture(GL_TEXTURE3)?;
+    /// arrays.set_pointer(ArrayKind::TexCoord, 2, GL_SHORT, 0, 0x100)?;
+    /// arrays.set_client_active_texture(GL_TEXTURE0)?;
+    /// assert_eq!(arrays.unit_tex_coords(3).component_type, GL_SHORT);
+    /// assert_eq!(arrays.unit_tex_coords(0).component_type, GL_FLOAT);
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
+    pub fn unit_tex_coords(&self, unit: usize) -> &ClientArray {
+        match unit {
+            0 => &self.arrays[ArrayKind::TexCoord as usize],
+            _ => &self.other_tex_coords[unit - 1],
+        }
+    }
+
+    /// Texture units 1 and up's texture coordinate arrays, indexed by unit - 1; `None` for
+    /// those that are not enabled.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::VertexArrays};
+    /// let mut arrays = VertexArrays::default();
+    /// arrays.set_client_active_texture(GL_TEXTURE2)?;
+    /// arrays.set_enabled(GL_TEXTURE_COORD_ARRAY, true)?;
+    /// let enabled = arrays.enabled_unit_arrays();
+    /// assert!(enabled[1].is_some() && enabled[0].is_none());
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
+    pub fn enabled_unit_arrays(&self) -> [Option<&ClientArray>; MAX_TEXTURE_UNITS - 1] {
+        std::array::from_fn(|k| Some(&self.other_tex_coords[k]).filter(|a| a.enabled))
+    }
+
+    /// `spans` for texture units 1 and up's enabled texture coordinate arrays (indexed by
+    /// unit - 1), which draws read for capture.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{gl::*, state::arrays::{ArrayKind, VertexArrays}};
+    /// let mut arrays = VertexArrays::default();
+    /// arrays.set_client_active_texture(GL_TEXTURE1)?;
+    /// arrays.set_pointer(ArrayKind::TexCoord, 2, GL_FLOAT, 0, 0x1000)?;
+    /// arrays.set_enabled(GL_TEXTURE_COORD_ARRAY, true)?;
+    /// let spans = arrays.unit_spans(1, 2)?;
+    /// assert_eq!(spans[0].map(|s| (s.address, s.len)), Some((0x1008, 16)));
+    /// # Ok::<(), fflight::GlError>(())
+    /// ```
+    pub fn unit_spans(
+        &self,
+        first: usize,
+        last: usize,
+    ) -> GlResult<[Option<ByteSpan>; MAX_TEXTURE_UNITS - 1]> {
+        let mut spans = [None; MAX_TEXTURE_UNITS - 1];
+        for (span, array) in spans.iter_mut().zip(self.enabled_unit_arrays()) {
+            if let Some(array) = array {
+                *span = array.client_span(first, last)?;
             }
-            let span = first
-                .checked_mul(array.effective_stride())
-                .and_then(|offset| array.address.checked_add(offset))
-                .zip(array.span_len(first, last))
-                .filter(|&(address, len)| address.checked_add(len).is_some())
-                .ok_or(GlError::InvalidValue)?;
-            spans[kind as usize] = Some(ByteSpan {
-                address: span.0,
-                len: span.1,
-            });
         }
         Ok(spans)
     }

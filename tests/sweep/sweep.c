@@ -621,6 +621,8 @@ static long long pointer_rule(int fn, const union sweep_arg *a, int k)
         return ELEMENT_INDICES;
     if (same(name, "fflCaptureReadVertices") || same(name, "fflCaptureReadPrimitives"))
         return (long long)(GLuint)ARG(1) * e;
+    if (same(name, "fflCaptureReadTexCoords"))
+        return (long long)(GLuint)ARG(2) * 4 * e;
     if (same(name, "fflLightVertices")) {
         long long count = SIZE_ARG(0), size = (GLint)ARG(1), stride = SIZE_ARG(k + 1), element;
         if (k == 2)
@@ -1003,7 +1005,8 @@ static int outside_gl_rules(const char *name)
            same(name, "fflSetThreads") || same(name, "fflGetThreads") || same(name, "glGetError") ||
            /* reading what capture collected is allowed anywhere (include/fflight.h) */
            same(name, "fflCaptureVertexCount") || same(name, "fflCapturePrimitiveCount") ||
-           same(name, "fflCaptureReadVertices") || same(name, "fflCaptureReadPrimitives");
+           same(name, "fflCaptureReadVertices") || same(name, "fflCaptureReadPrimitives") ||
+           same(name, "fflCaptureReadTexCoords");
 }
 
 /* §2.6.3: client-state commands are not allowed between glBegin and glEnd, "but an error
