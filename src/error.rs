@@ -82,3 +82,20 @@ impl ErrorFlag {
         self.0.take().map_or(GL_NO_ERROR, GlError::code)
     }
 }
+
+/// A copy of `bytes`, or GL_OUT_OF_MEMORY when it cannot be allocated: for copies whose size
+/// the application decides (arrays compiled into a display list), which must fail as GL
+/// fails, not abort the process.
+///
+/// # Examples
+///
+/// ```
+/// assert_eq!(fflight::error::try_copy(&[1, 2, 3]), Ok(vec![1, 2, 3]));
+/// ```
+pub fn try_copy(bytes: &[u8]) -> GlResult<Vec<u8>> {
+    let mut copy = Vec::new();
+    copy.try_reserve_exact(bytes.len())
+        .map_err(|_| GlError::OutOfMemory)?;
+    copy.extend_from_slice(bytes);
+    Ok(copy)
+}

@@ -18,7 +18,7 @@ use glam::{Vec3, Vec4};
 
 use crate::commands::buffers::with_stores;
 use crate::context::Context;
-use crate::error::{GlError, GlResult};
+use crate::error::{GlError, GlResult, try_copy};
 use crate::gl::*;
 use crate::lighting::lanes::LANES;
 use crate::pipeline::block::InputBlock;
@@ -1017,7 +1017,7 @@ impl Context {
                 }
                 ElementIndices::Listed { index_type, bytes } => RecordedIndices::Listed {
                     index_type,
-                    bytes: bytes.to_vec(),
+                    bytes: try_copy(bytes)?,
                 },
             },
         };
@@ -1029,14 +1029,21 @@ impl Context {
         let sources = with_stores(&arrays, sources, &stores);
         let reader = ArrayReader::new(&arrays, &sources, first, last)?;
         draw.base = reader.base;
-        let copy = |array: Option<(&ClientArray, &[u8])>| {
-            array.map(|(array, bytes)| {
-                let len = array.span_len(reader.base, last).unwrap_or(0);
-                (*array, bytes[..len].to_vec())
-            })
+        // Sizes the application decides: a copy too large to allocate is GL_OUT_OF_MEMORY.
+        let copy = |array: Option<(&ClientArray, &[u8])>| -> GlResult<_> {
+            array
+                .map(|(array, bytes)| {
+                    let len = array.span_len(reader.base, last).unwrap_or(0);
+                    Ok((*array, try_copy(&bytes[..len])?))
+                })
+                .transpose()
         };
-        draw.arrays = reader.arrays.map(copy);
-        draw.units = reader.units.map(copy);
+        for (recorded, array) in draw.arrays.iter_mut().zip(reader.arrays) {
+            *recorded = copy(array)?;
+        }
+        for (recorded, array) in draw.units.iter_mut().zip(reader.units) {
+            *recorded = copy(array)?;
+        }
         Ok(draw)
     }
 
