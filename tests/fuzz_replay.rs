@@ -169,3 +169,54 @@ fn invariant_checks_catch_bad_output() {
     assert!(harness::check_hits(&[1, 5, 9], 1).is_err());
     assert!(harness::check_hits(&[1, 5, 9], -1).is_ok());
 }
+
+unsafe extern "C" {
+    safe fn glNewList(list: GLuint, mode: GLenum);
+    safe fn glEndList();
+    safe fn glCallList(list: GLuint);
+    safe fn glEnableClientState(array: GLenum);
+    safe fn glGetError() -> GLenum;
+    fn glVertexPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const std::ffi::c_void);
+    fn glDrawElements(
+        mode: GLenum,
+        count: GLsizei,
+        type_: GLenum,
+        indices: *const std::ffi::c_void,
+    );
+}
+
+/// Found by `make fuzz` (a crash, fixed): a draw compiled into a display list copies the
+/// array elements it references, and an index far into an array of a huge stride asked for
+/// 38 GB, which aborted the process. Now GL_OUT_OF_MEMORY, raised when the list runs: here,
+/// 900 GiB of a read-only mapping no memory backs.
+#[test]
+fn compiling_a_draw_too_large_to_copy_is_out_of_memory() {
+    const SPAN: usize = 1 << 40;
+    // SAFETY: a fresh private mapping, unmapped below; nothing else uses it.
+    let base = unsafe {
+        libc::mmap(
+            std::ptr::null_mut(),
+            SPAN,
+            libc::PROT_READ,
+            libc::MAP_PRIVATE | libc::MAP_ANONYMOUS | libc::MAP_NORESERVE,
+            -1,
+            0,
+        )
+    };
+    assert!(base != libc::MAP_FAILED, "mmap of 1 TiB failed");
+    // The copy spans the elements from the lowest index to the highest.
+    let indices: [GLuint; 2] = [0, 900];
+    glEnableClientState(GL_VERTEX_ARRAY);
+    // SAFETY: element 900 at a stride of 1 GiB lies inside the mapping.
+    unsafe { glVertexPointer(3, GL_FLOAT, 1 << 30, base) };
+    glNewList(1, GL_COMPILE);
+    // SAFETY: two indices, read from `indices`.
+    unsafe { glDrawElements(GL_POINTS, 2, GL_UNSIGNED_INT, indices.as_ptr().cast()) };
+    glEndList();
+    // An error of a compiled draw is compiled in its place (src/capi/arrays.rs).
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    glCallList(1);
+    assert_eq!(glGetError(), GL_OUT_OF_MEMORY);
+    // SAFETY: the mapping made above, no longer read (the draw failed to compile).
+    unsafe { libc::munmap(base, SPAN) };
+}
