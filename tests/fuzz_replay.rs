@@ -170,12 +170,13 @@ fn invariant_checks_catch_bad_output() {
     assert!(harness::check_hits(&[1, 5, 9], -1).is_ok());
 }
 
+// Declared as the harness's generated table declares them (`fuzz/src/calls.rs`).
 unsafe extern "C" {
-    safe fn glNewList(list: GLuint, mode: GLenum);
-    safe fn glEndList();
-    safe fn glCallList(list: GLuint);
-    safe fn glEnableClientState(array: GLenum);
-    safe fn glGetError() -> GLenum;
+    fn glNewList(list: GLuint, mode: GLenum);
+    fn glEndList();
+    fn glCallList(list: GLuint);
+    fn glEnableClientState(array: GLenum);
+    fn glGetError() -> GLenum;
     fn glVertexPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const std::ffi::c_void);
     fn glDrawElements(
         mode: GLenum,
@@ -206,17 +207,19 @@ fn compiling_a_draw_too_large_to_copy_is_out_of_memory() {
     assert!(base != libc::MAP_FAILED, "mmap of 1 TiB failed");
     // The copy spans the elements from the lowest index to the highest.
     let indices: [GLuint; 2] = [0, 900];
-    glEnableClientState(GL_VERTEX_ARRAY);
-    // SAFETY: element 900 at a stride of 1 GiB lies inside the mapping.
-    unsafe { glVertexPointer(3, GL_FLOAT, 1 << 30, base) };
-    glNewList(1, GL_COMPILE);
-    // SAFETY: two indices, read from `indices`.
-    unsafe { glDrawElements(GL_POINTS, 2, GL_UNSIGNED_INT, indices.as_ptr().cast()) };
-    glEndList();
-    // An error of a compiled draw is compiled in its place (src/capi/arrays.rs).
-    assert_eq!(glGetError(), GL_NO_ERROR);
-    glCallList(1);
-    assert_eq!(glGetError(), GL_OUT_OF_MEMORY);
+    // SAFETY: element 900 at a stride of 1 GiB lies inside the mapping; the draw reads its
+    // two indices from `indices`; the other calls take no pointer.
+    unsafe {
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glVertexPointer(3, GL_FLOAT, 1 << 30, base);
+        glNewList(1, GL_COMPILE);
+        glDrawElements(GL_POINTS, 2, GL_UNSIGNED_INT, indices.as_ptr().cast());
+        glEndList();
+        // An error of a compiled draw is compiled in its place (src/capi/arrays.rs).
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        glCallList(1);
+        assert_eq!(glGetError(), GL_OUT_OF_MEMORY);
+    }
     // SAFETY: the mapping made above, no longer read (the draw failed to compile).
     unsafe { libc::munmap(base, SPAN) };
 }
