@@ -342,6 +342,14 @@ fn add_light<
     sums.refused = sums.refused | n_dot_l.abs().lt(F::splat(DISCONTINUITY));
     sums.sensitivity = weight.mul_add(F::splat(light.diffuse_sensitivity), sums.sensitivity);
     let face_count = if TWO_SIDE { 2 } else { 1 };
+    // The faces see n·h and -n·h, of which one at most is positive: with one shininess
+    // (and a power of 0 that is 0), one power of |n·h| serves both.
+    let shininess = faces[0].shininess;
+    let shared = if TWO_SIDE && shininess > 0 && faces[1].shininess == shininess {
+        Some(n_dot_h.abs().power_and_slope(shininess))
+    } else {
+        None
+    };
     let mut largest_power = F::zero();
     for (face, fast) in faces.iter().enumerate().take(face_count) {
         // The back face sees the negated normal.
@@ -352,7 +360,13 @@ fn add_light<
         };
         let diffuse = n_dot_l.max(F::zero());
         let lit = diffuse.gt(F::zero());
-        let (slope, power) = n_dot_h.max(F::zero()).power_and_slope(fast.shininess);
+        let (slope, power) = match shared {
+            Some((slope, power)) => {
+                let facing = n_dot_h.gt(F::zero());
+                (facing.keep(slope), facing.keep(power))
+            }
+            None => n_dot_h.max(F::zero()).power_and_slope(fast.shininess),
+        };
         sums.diffuse[face] = sums.diffuse[face].add_weighted(weight * diffuse, light.diffuse);
         sums.specular[face] = sums.specular[face].add_weighted(lit.keep(weight * power), light.specular);
         sums.specular_sensitivity[face] = lit.keep(weight * slope).mul_add(

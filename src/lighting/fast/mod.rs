@@ -21,6 +21,8 @@ mod x86;
 
 use glam::{DVec3, Mat3, Mat4, Vec4};
 
+use super::batch::process_blocks_exact;
+use super::lanes::LANES;
 use super::{PreparedFace, PreparedLight, PreparedLighting};
 use crate::pipeline::block::{InputBlock, OutputBlock, lanes4_get};
 use crate::pipeline::vertex::{CurrentAttribs, DerivedState, VertexTransform};
@@ -304,12 +306,24 @@ pub(crate) fn process_blocks(
         let Some(kernel) = x86::kernel() else {
             return false;
         };
-        for (input, output) in inputs.iter().zip(outputs.iter_mut()) {
-            let refused = kernel(state, input, output);
+        // Made at the first refusal: most calls have none.
+        let mut queue: Option<Box<RefusedLanes>> = None;
+        for (block, input) in inputs.iter().enumerate().take(outputs.len()) {
+            let mut refused = kernel(state, input, &mut outputs[block]);
             if state.tex_gen {
-                generate_tex_coords(derived, input, output, refused);
+                generate_tex_coords(derived, input, &mut outputs[block], refused);
             }
-            relight_refused(derived, input, output, refused);
+            while refused != 0 {
+                let lane = refused.trailing_zeros() as usize;
+                refused &= refused - 1;
+                let queue = queue.get_or_insert_default();
+                if queue.push(input, block, lane) {
+                    queue.relight(derived, &mut outputs[..=block]);
+                }
+            }
+        }
+        if let Some(queue) = &mut queue {
+            queue.relight(derived, outputs);
         }
         true
     }
@@ -355,18 +369,42 @@ pub fn kernel_block(state: &FastState, input: &InputBlock, output: &mut OutputBl
     }
 }
 
-/// The lanes the kernel refused, each through the scalar double-precision path.
-fn relight_refused(
-    derived: &DerivedState,
-    input: &InputBlock,
-    output: &mut OutputBlock,
-    mut refused: u8,
-) {
-    while refused != 0 {
-        let lane = refused.trailing_zeros() as usize;
-        refused &= refused - 1;
+/// Lanes the kernel refused, gathered from the blocks of a call into one block and lit again
+/// by the double-precision engine eight at a time (the scalar path's results to the last bit,
+/// at a fraction of its cost per vertex).
+#[derive(Default)]
+struct RefusedLanes {
+    input: InputBlock,
+    /// Where each lane came from: (block, lane).
+    origins: [(usize, usize); LANES],
+}
+
+impl RefusedLanes {
+    /// Queues lane `lane` of `input`, block `block` of the call; true when the queue is full.
+    fn push(&mut self, input: &InputBlock, block: usize, lane: usize) -> bool {
         let (position, attribs) = lane_input(input, lane);
-        output.set_vertex(lane, &derived.process(position, &attribs));
+        self.origins[self.input.len] = (block, lane);
+        self.input.push(position, &attribs);
+        self.input.is_full()
+    }
+
+    /// Lights the queued lanes into their places in `outputs`, and empties the queue.
+    fn relight(&mut self, derived: &DerivedState, outputs: &mut [OutputBlock]) {
+        let len = self.input.len;
+        if len <= 2 {
+            // Fewer lanes than the block engine's cost: one by one (the same results).
+            for (k, &(block, lane)) in self.origins[..len].iter().enumerate() {
+                let (position, attribs) = lane_input(&self.input, k);
+                outputs[block].set_vertex(lane, &derived.process(position, &attribs));
+            }
+        } else {
+            let mut lit = [OutputBlock::default()];
+            process_blocks_exact(derived, std::slice::from_ref(&self.input), &mut lit);
+            for (k, &(block, lane)) in self.origins[..len].iter().enumerate() {
+                outputs[block].set_vertex(lane, &lit[0].vertex(k));
+            }
+        }
+        self.input.len = 0;
     }
 }
 

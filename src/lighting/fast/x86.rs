@@ -363,19 +363,22 @@ impl Sub for V3 {
     }
 }
 
-/// The kernel for this CPU: AVX-512 or AVX2 with FMA, or `None` without them.
-pub(super) fn kernel() -> Option<fn(&FastState, &InputBlock, &mut OutputBlock) -> u8> {
-    if is_x86_feature_detected!("avx512f")
-        && is_x86_feature_detected!("avx512vl")
-        && is_x86_feature_detected!("avx2")
-        && is_x86_feature_detected!("fma")
-    {
-        Some(|state, input, output| unsafe { avx512::process(state, input, output) })
-    } else if is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma") {
-        Some(|state, input, output| unsafe { avx2::process(state, input, output) })
-    } else {
-        None
-    }
+/// A kernel: one block, its refused lanes.
+type Kernel = fn(&FastState, &InputBlock, &mut OutputBlock) -> u8;
+
+/// The kernel for this CPU: AVX-512 or AVX2 with FMA, or `None` without them (found once).
+pub(super) fn kernel() -> Option<Kernel> {
+    static KERNEL: std::sync::OnceLock<Option<Kernel>> = std::sync::OnceLock::new();
+    *KERNEL.get_or_init(|| {
+        let avx2 = is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma");
+        if avx2 && is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512vl") {
+            Some(|state, input, output| unsafe { avx512::process(state, input, output) })
+        } else if avx2 {
+            Some(|state, input, output| unsafe { avx2::process(state, input, output) })
+        } else {
+            None
+        }
+    })
 }
 
 /// The kernel compiled for AVX2 with FMA.
