@@ -3,67 +3,215 @@
 // the wrappers call inline into each function (no closures here: they would not inherit
 // the features).
 
-use super::{D2, F, Mask, V3};
+use std::ops::{Add, Sub};
+
+use lanes::{BLOCKS, D2, F, Mask};
 use crate::lighting::fast::{
     DISCONTINUITY, DOT_ERROR, ERROR_BUDGET, FastFace, FastLight, FastState, ILL_CONDITIONED,
     SHORTEST_HALF_SQUARED,
 };
-use crate::pipeline::block::{InputBlock, Lanes4, OutputBlock};
+use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::state::material::MaterialMask;
 
-with_features! {
-/// One block: the lanes refused (one bit each), whose outputs the caller replaces.
-#[inline]
-pub(super) fn process(state: &FastState, input: &InputBlock, out: &mut OutputBlock) -> u8 {
-    let refused = match (state.lit, state.two_side, state.local_viewer) {
-        (false, _, _) => block::<false, false, false>(state, input, out),
-        (true, false, false) => block::<true, false, false>(state, input, out),
-        (true, false, true) => block::<true, false, true>(state, input, out),
-        (true, true, false) => block::<true, true, false>(state, input, out),
-        (true, true, true) => block::<true, true, true>(state, input, out),
-    };
-    refused & ((1u32 << input.len) - 1) as u8
-}
+/// Clamped to [0, 1]; NaN becomes 0, as `lighting::clamp01` makes it.
+#[inline(always)]
+fn clamp01(x: F) -> F {
+    x.max(F::zero()).min(F::splat(1.0))
 }
 
-with_features! {
-#[inline]
-fn load4(lanes: &Lanes4) -> [F; 4] {
-    [F::load(&lanes[0]), F::load(&lanes[1]), F::load(&lanes[2]), F::load(&lanes[3])]
-}
+/// (`e·x^(e-1)`, `x^e`) for `x` >= 0, with 0^0 = 1: the power and its
+/// derivative, by repeated squaring.
+#[inline(always)]
+fn power_and_slope(x: F, exponent: u32) -> (F, F) {
+    if exponent == 0 {
+        return (F::zero(), F::splat(1.0));
+    }
+    let mut bits = exponent - 1;
+    let mut base = x;
+    let mut below = F::splat(1.0);
+    while bits != 0 {
+        if bits & 1 != 0 {
+            below = below * base;
+        }
+        bits >>= 1;
+        if bits != 0 {
+            base = base * base;
+        }
+    }
+    (below * F::splat(exponent as f32), below * x)
 }
 
-with_features! {
-#[inline]
-fn store4(values: [F; 4], lanes: &mut Lanes4) {
-    for k in 0..4 {
-        values[k].store(&mut lanes[k]);
+/// A 3-vector per lane.
+#[derive(Clone, Copy)]
+struct V3 {
+    x: F,
+    y: F,
+    z: F,
+}
+
+impl V3 {
+    #[inline(always)]
+    fn splat(v: [f32; 3]) -> V3 {
+        V3 {
+            x: F::splat(v[0]),
+            y: F::splat(v[1]),
+            z: F::splat(v[2]),
+        }
+    }
+
+    #[inline(always)]
+    fn zero() -> V3 {
+        V3 {
+            x: F::zero(),
+            y: F::zero(),
+            z: F::zero(),
+        }
+    }
+
+    #[inline(always)]
+    fn dot(self, o: V3) -> F {
+        self.x.mul_add(o.x, self.y.mul_add(o.y, self.z * o.z))
+    }
+
+    #[inline(always)]
+    fn scale(self, s: F) -> V3 {
+        V3 {
+            x: self.x * s,
+            y: self.y * s,
+            z: self.z * s,
+        }
+    }
+
+    /// `self + weight * color`.
+    #[inline(always)]
+    fn add_weighted(self, weight: F, color: [f32; 3]) -> V3 {
+        V3 {
+            x: weight.mul_add(F::splat(color[0]), self.x),
+            y: weight.mul_add(F::splat(color[1]), self.y),
+            z: weight.mul_add(F::splat(color[2]), self.z),
+        }
+    }
+
+    #[inline(always)]
+    fn mul(self, o: V3) -> V3 {
+        V3 {
+            x: self.x * o.x,
+            y: self.y * o.y,
+            z: self.z * o.z,
+        }
     }
 }
+
+impl Add for V3 {
+    type Output = V3;
+    #[inline(always)]
+    fn add(self, o: V3) -> V3 {
+        V3 {
+            x: self.x + o.x,
+            y: self.y + o.y,
+            z: self.z + o.z,
+        }
+    }
+}
+
+impl Sub for V3 {
+    type Output = V3;
+    #[inline(always)]
+    fn sub(self, o: V3) -> V3 {
+        V3 {
+            x: self.x - o.x,
+            y: self.y - o.y,
+            z: self.z - o.z,
+        }
+    }
+}
+
+/// The blocks a vector holds, in and out.
+type Inputs<'a> = [&'a InputBlock; BLOCKS];
+type Outputs<'a> = [&'a mut OutputBlock; BLOCKS];
+
+with_features! {
+/// Every block of `inputs` into `outputs` (pairwise), `BLOCKS` at a time (a count of blocks
+/// `BLOCKS` divides): each block's refused lanes (one bit each, whose outputs the caller
+/// replaces) at its index in `refused`.
+pub(super) fn process_blocks(
+    state: &FastState,
+    inputs: &[InputBlock],
+    outputs: &mut [OutputBlock],
+    refused: &mut [u8],
+) {
+    let count = inputs.len().min(outputs.len()).min(refused.len());
+    debug_assert!(count.is_multiple_of(BLOCKS));
+    let groups = inputs[..count]
+        .chunks_exact(BLOCKS)
+        .zip(outputs[..count].chunks_exact_mut(BLOCKS))
+        .zip(refused[..count].chunks_exact_mut(BLOCKS));
+    for ((ins, outs), refused) in groups {
+        let ins: Inputs = std::array::from_fn(|k| &ins[k]);
+        let mut outs = outs.iter_mut();
+        let outs: Outputs = std::array::from_fn(|_| outs.next().expect("BLOCKS outputs"));
+        let bits = match (state.lit, state.two_side, state.local_viewer) {
+            (false, _, _) => group_of::<false, false, false>(state, ins, outs),
+            (true, false, false) => group_of::<true, false, false>(state, ins, outs),
+            (true, false, true) => group_of::<true, false, true>(state, ins, outs),
+            (true, true, false) => group_of::<true, true, false>(state, ins, outs),
+            (true, true, true) => group_of::<true, true, true>(state, ins, outs),
+        };
+        for (k, (refused, input)) in refused.iter_mut().zip(ins).enumerate() {
+            *refused = bits.block_bits(k) & ((1u32 << input.len) - 1) as u8;
+        }
+    }
+}
+}
+
+/// Four components of the group's blocks: `load4!(ins, field)`, a macro so that the field's
+/// projection inlines.
+macro_rules! load4 {
+    ($ins:expr, $field:ident) => {{
+        let ins: &Inputs = &$ins;
+        [
+            F::load(ins.map(|b| &b.$field[0])),
+            F::load(ins.map(|b| &b.$field[1])),
+            F::load(ins.map(|b| &b.$field[2])),
+            F::load(ins.map(|b| &b.$field[3])),
+        ]
+    }};
+}
+
+/// Stores four components into a field of each of the group's blocks:
+/// `store4!(values, outs, field)`.
+macro_rules! store4 {
+    ($values:expr, $outs:expr, $field:ident) => {{
+        let values: [F; 4] = $values;
+        for (k, value) in values.into_iter().enumerate() {
+            value.store($outs.each_mut().map(|o| &mut o.$field[k]));
+        }
+    }};
 }
 
 with_features! {
 #[inline]
 fn clamp4(c: [F; 4]) -> [F; 4] {
-    [c[0].clamp01(), c[1].clamp01(), c[2].clamp01(), c[3].clamp01()]
+    [clamp01(c[0]), clamp01(c[1]), clamp01(c[2]), clamp01(c[3])]
 }
 }
 
 with_features! {
 /// `m * v` in double precision with `m` in columns, in glam's order of operations (no fused
-/// multiply-add): the scalar path's results to the last bit. Stores them rounded to single
-/// precision in `rounded` and returns them in double precision, low and high four lanes.
+/// multiply-add): the scalar path's results to the last bit. Also returns them rounded to
+/// single precision.
 #[inline]
-fn transform4_exact(m: &[[f64; 4]; 4], v: [D2; 4], rounded: &mut Lanes4) -> [D2; 4] {
+fn transform4_exact(m: &[[f64; 4]; 4], v: [D2; 4]) -> ([D2; 4], [F; 4]) {
     let mut out = [v[0]; 4];
+    let mut rounded = [F::zero(); 4];
     for (row, o) in out.iter_mut().enumerate() {
         let mut sum = v[0].scale(m[0][row]);
         sum = sum.add(v[1].scale(m[1][row]));
         sum = sum.add(v[2].scale(m[2][row]));
         *o = sum.add(v[3].scale(m[3][row]));
-        o.to_f32().store(&mut rounded[row]);
+        rounded[row] = o.to_f32();
     }
-    out
+    (out, rounded)
 }
 }
 
@@ -120,41 +268,48 @@ struct Vertex {
 }
 
 with_features! {
-#[inline]
-fn block<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
+// Not inlined: one function per state key keeps each variant's registers to itself.
+#[inline(never)]
+fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
     state: &FastState,
-    input: &InputBlock,
-    out: &mut OutputBlock,
-) -> u8 {
-    let object = load4(&input.position);
+    ins: Inputs,
+    mut outs: Outputs,
+) -> Mask {
+    let object = load4!(ins, position);
     let mut refused = Mask::none();
     for c in &object {
         refused = refused | c.out_of_range();
     }
     let object = [D2::from_f32(object[0]), D2::from_f32(object[1]), D2::from_f32(object[2]), D2::from_f32(object[3])];
-    let eye = transform4_exact(&state.modelview, object, &mut out.eye);
-    let mut clip = [[0.0; 8]; 4];
-    transform4_exact(&state.projection, eye, &mut clip);
-    out.clip = clip;
-    let eye = load4(&out.eye);
+    let (eye, eye_rounded) = transform4_exact(&state.modelview, object);
+    store4!(eye_rounded, outs, eye);
+    store4!(transform4_exact(&state.projection, eye).1, outs, clip);
+    let eye = eye_rounded;
     if state.texture_is_identity {
-        out.tex_coord = input.tex_coord;
+        for (out, input) in outs.iter_mut().zip(ins) {
+            out.tex_coord = input.tex_coord;
+        }
     } else {
-        store4(transform4(&state.texture, load4(&input.tex_coord)), &mut out.tex_coord);
+        let tex_coord = transform4(&state.texture, load4!(ins, tex_coord));
+        store4!(tex_coord, outs, tex_coord);
     }
-    out.edge_flag = input.edge_flag;
-    out.len = input.len;
-    let color = load4(&input.color);
+    for (out, input) in outs.iter_mut().zip(ins) {
+        out.edge_flag = input.edge_flag;
+        out.len = input.len;
+    }
+    let color = load4!(ins, color);
     if !LIT {
-        let secondary = load4(&input.secondary_color);
+        let secondary = load4!(ins, secondary_color);
         for c in color.iter().chain(&secondary) {
             refused = refused | c.out_of_range();
         }
-        store4(clamp4(color), &mut out.front_primary);
-        store4(clamp4(secondary), &mut out.front_secondary);
-        out.back_primary = out.front_primary;
-        out.back_secondary = out.front_secondary;
-        return refused.bits();
+        store4!(clamp4(color), outs, front_primary);
+        store4!(clamp4(secondary), outs, front_secondary);
+        for out in outs.iter_mut() {
+            out.back_primary = out.front_primary;
+            out.back_secondary = out.front_secondary;
+        }
+        return refused;
     }
     if state.tracks_color {
         for c in &color {
@@ -163,9 +318,9 @@ fn block<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
     }
 
     let normal = V3 {
-        x: F::load(&input.normal[0]),
-        y: F::load(&input.normal[1]),
-        z: F::load(&input.normal[2]),
+        x: F::load(ins.map(|b| &b.normal[0])),
+        y: F::load(ins.map(|b| &b.normal[1])),
+        z: F::load(ins.map(|b| &b.normal[2])),
     };
     for c in [normal.x, normal.y, normal.z] {
         refused = refused | c.out_of_range();
@@ -242,23 +397,25 @@ fn block<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
         let mut lowest = F::splat(f32::INFINITY);
         let (primary, secondary) =
             face_colors(state, face, &sums, &color, &mut refused, &mut lowest);
-        let (primary_out, secondary_out) = if face == 0 {
-            (&mut out.front_primary, &mut out.front_secondary)
+        if face == 0 {
+            store4!(primary, outs, front_primary);
+            store4!(secondary, outs, front_secondary);
         } else {
-            (&mut out.back_primary, &mut out.back_secondary)
-        };
-        store4(primary, primary_out);
-        store4(secondary, secondary_out);
+            store4!(primary, outs, back_primary);
+            store4!(secondary, outs, back_secondary);
+        }
         let sensitivity = sums.sensitivity + sums.specular_sensitivity[face];
         let error = sensitivity * normal_scale * F::splat(DOT_ERROR);
         let saturated = lowest.gt(F::splat(1.0) + error);
         refused = refused | (error.exceeds(F::splat(ERROR_BUDGET)) & !saturated);
     }
     if !TWO_SIDE {
-        out.back_primary = out.front_primary;
-        out.back_secondary = out.front_secondary;
+        for out in outs.iter_mut() {
+            out.back_primary = out.front_primary;
+            out.back_secondary = out.front_secondary;
+        }
     }
-    refused.bits()
+    refused
 }
 }
 
@@ -305,7 +462,7 @@ fn add_light<
         let cutoff = F::splat(light.spot_cos_cutoff);
         sums.refused = sums.refused | (cos_angle - cutoff).abs().lt(F::splat(DISCONTINUITY));
         let inside = cos_angle.ge(cutoff);
-        let (slope, power) = cos_angle.max(F::zero()).power_and_slope(light.spot_exponent);
+        let (slope, power) = power_and_slope(cos_angle.max(F::zero()), light.spot_exponent);
         let slope = match attenuation {
             Some(a) => a * slope,
             None => slope,
@@ -346,7 +503,7 @@ fn add_light<
     // (and a power of 0 that is 0), one power of |n·h| serves both.
     let shininess = faces[0].shininess;
     let shared = if TWO_SIDE && shininess > 0 && faces[1].shininess == shininess {
-        Some(n_dot_h.abs().power_and_slope(shininess))
+        Some(power_and_slope(n_dot_h.abs(), shininess))
     } else {
         None
     };
@@ -365,7 +522,7 @@ fn add_light<
                 let facing = n_dot_h.gt(F::zero());
                 (facing.keep(slope), facing.keep(power))
             }
-            None => n_dot_h.max(F::zero()).power_and_slope(fast.shininess),
+            None => power_and_slope(n_dot_h.max(F::zero()), fast.shininess),
         };
         sums.diffuse[face] = sums.diffuse[face].add_weighted(weight * diffuse, light.diffuse);
         sums.specular[face] = sums.specular[face].add_weighted(lit.keep(weight * power), light.specular);
@@ -420,7 +577,7 @@ with_features! {
 fn clamp_rgba(c: V3, alpha: F, refused: &mut Mask, lowest: &mut F) -> [F; 4] {
     *refused = *refused | c.x.is_nan() | c.y.is_nan() | c.z.is_nan();
     *lowest = lowest.min(c.x).min(c.y).min(c.z);
-    [c.x.clamp01(), c.y.clamp01(), c.z.clamp01(), alpha.clamp01()]
+    [clamp01(c.x), clamp01(c.y), clamp01(c.z), clamp01(alpha)]
 }
 }
 

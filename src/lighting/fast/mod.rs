@@ -308,17 +308,31 @@ pub(crate) fn process_blocks(
         };
         // Made at the first refusal: most calls have none.
         let mut queue: Option<Box<RefusedLanes>> = None;
-        for (block, input) in inputs.iter().enumerate().take(outputs.len()) {
-            let mut refused = kernel(state, input, &mut outputs[block]);
-            if state.tex_gen {
-                generate_tex_coords(derived, input, &mut outputs[block], refused);
-            }
-            while refused != 0 {
-                let lane = refused.trailing_zeros() as usize;
-                refused &= refused - 1;
-                let queue = queue.get_or_insert_default();
-                if queue.push(input, block, lane) {
-                    queue.relight(derived, &mut outputs[..=block]);
+        let count = inputs.len().min(outputs.len());
+        const CHUNK: usize = 16;
+        let mut refused = [0u8; CHUNK];
+        for first in (0..count).step_by(CHUNK) {
+            let end = count.min(first + CHUNK);
+            let refused = &mut refused[..end - first];
+            kernel(
+                state,
+                &inputs[first..end],
+                &mut outputs[first..end],
+                refused,
+            );
+            for (k, &lanes) in refused.iter().enumerate() {
+                let block = first + k;
+                if state.tex_gen {
+                    generate_tex_coords(derived, &inputs[block], &mut outputs[block], lanes);
+                }
+                let mut lanes = lanes;
+                while lanes != 0 {
+                    let lane = lanes.trailing_zeros() as usize;
+                    lanes &= lanes - 1;
+                    let queue = queue.get_or_insert_default();
+                    if queue.push(&inputs[block], block, lane) {
+                        queue.relight(derived, &mut outputs[..=block]);
+                    }
                 }
             }
         }
@@ -330,6 +344,53 @@ pub(crate) fn process_blocks(
     #[cfg(not(target_arch = "x86_64"))]
     {
         let _ = (state, derived, inputs, outputs);
+        false
+    }
+}
+
+/// The instruction sets the kernel is compiled for on x86-64.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum InstructionSet {
+    /// AVX2 with FMA: eight lanes, a block at a time.
+    Avx2,
+    /// AVX-512 (F and VL): sixteen lanes, two blocks at a time.
+    Avx512,
+}
+
+/// The kernel of instruction set `set` alone on `inputs` into `outputs`, each block's refused
+/// lanes into `refused` (see `kernel_block`), or false when this CPU lacks `set`. For tests
+/// that compare the instruction sets whatever the machine would pick.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::lighting::fast::{InstructionSet, kernel_blocks_on};
+/// use fflight::pipeline::block::{InputBlock, OutputBlock};
+/// use fflight::Context;
+/// let mut ctx = Context::new();
+/// let fast = ctx.derived().fast.clone().unwrap();
+/// let (inputs, mut outputs, mut refused) = ([InputBlock::default(); 3], [OutputBlock::default(); 3], [0; 3]);
+/// if kernel_blocks_on(InstructionSet::Avx2, &fast, &inputs, &mut outputs, &mut refused) {
+///     assert_eq!(refused, [0; 3]); // empty blocks: nothing to refuse
+/// }
+/// ```
+pub fn kernel_blocks_on(
+    set: InstructionSet,
+    state: &FastState,
+    inputs: &[InputBlock],
+    outputs: &mut [OutputBlock],
+    refused: &mut [u8],
+) -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        x86::kernel_for(set).is_some_and(|kernel| {
+            kernel(state, inputs, outputs, refused);
+            true
+        })
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = (set, state, inputs, outputs, refused);
         false
     }
 }
@@ -360,7 +421,16 @@ pub(crate) fn process_blocks(
 pub fn kernel_block(state: &FastState, input: &InputBlock, output: &mut OutputBlock) -> Option<u8> {
     #[cfg(target_arch = "x86_64")]
     {
-        x86::kernel().map(|kernel| kernel(state, input, output))
+        x86::kernel().map(|kernel| {
+            let mut refused = [0];
+            kernel(
+                state,
+                std::slice::from_ref(input),
+                std::slice::from_mut(output),
+                &mut refused,
+            );
+            refused[0]
+        })
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
