@@ -348,4 +348,56 @@ static const struct pname_query PNAME_QUERIES[] = {
     { "glGetMinmaxParameter", PNAME_TABLE(MINMAX_COUNTS), 4, { GL_MINMAX } },
 };
 
+/* The commands setting the same state read as many values (§2.14.2, §3.3, §3.6.3, §3.6.5,
+ * §3.8.4, §3.8.13, §3.10: each names its pnames and takes the state's type; the state tables
+ * give the count): a read past the count faults against the guard page. */
+static const struct pname_count MATERIAL_SET_COUNTS[] = {
+    { GL_AMBIENT, 4 }, { GL_DIFFUSE, 4 }, { GL_SPECULAR, 4 }, { GL_EMISSION, 4 },
+    { GL_SHININESS, 1 }, { GL_COLOR_INDEXES, 3 }, { GL_AMBIENT_AND_DIFFUSE, 4 },
+};
+static const struct pname_count LIGHT_MODEL_COUNTS[] = {
+    { GL_LIGHT_MODEL_AMBIENT, 4 }, { GL_LIGHT_MODEL_LOCAL_VIEWER, 1 },
+    { GL_LIGHT_MODEL_TWO_SIDE, 1 }, { GL_LIGHT_MODEL_COLOR_CONTROL, 1 },
+};
+static const struct pname_count FOG_COUNTS[] = {
+    { GL_FOG_MODE, 1 }, { GL_FOG_DENSITY, 1 }, { GL_FOG_START, 1 }, { GL_FOG_END, 1 },
+    { GL_FOG_INDEX, 1 }, { GL_FOG_COLOR, 4 }, { GL_FOG_COORD_SRC, 1 },
+};
+static const struct pname_count POINT_PARAMETER_COUNTS[] = {
+    { GL_POINT_SIZE_MIN, 1 }, { GL_POINT_SIZE_MAX, 1 }, { GL_POINT_FADE_THRESHOLD_SIZE, 1 },
+    { GL_POINT_DISTANCE_ATTENUATION, 3 },
+};
+/* Only the settable ones (§3.6.3, §3.6.5, §3.8.4: the sizes and formats are read-only, so
+ * is TEXTURE_RESIDENT); a pname a command does not take gets its family's most values. */
+static const struct pname_count TEX_PARAMETER_SET_COUNTS[] = {
+    { GL_TEXTURE_BORDER_COLOR, 4 }, { GL_TEXTURE_MIN_FILTER, 1 }, { GL_TEXTURE_MAG_FILTER, 1 },
+    { GL_TEXTURE_WRAP_S, 1 }, { GL_TEXTURE_WRAP_T, 1 }, { GL_TEXTURE_WRAP_R, 1 },
+    { GL_TEXTURE_PRIORITY, 1 }, { GL_TEXTURE_MIN_LOD, 1 }, { GL_TEXTURE_MAX_LOD, 1 },
+    { GL_TEXTURE_BASE_LEVEL, 1 }, { GL_TEXTURE_MAX_LEVEL, 1 }, { GL_TEXTURE_LOD_BIAS, 1 },
+    { GL_DEPTH_TEXTURE_MODE, 1 }, { GL_TEXTURE_COMPARE_MODE, 1 },
+    { GL_TEXTURE_COMPARE_FUNC, 1 }, { GL_GENERATE_MIPMAP, 1 },
+};
+static const struct pname_count COLOR_TABLE_SET_COUNTS[] = {
+    { GL_COLOR_TABLE_SCALE, 4 }, { GL_COLOR_TABLE_BIAS, 4 },
+};
+static const struct pname_count CONVOLUTION_SET_COUNTS[] = {
+    { GL_CONVOLUTION_BORDER_COLOR, 4 }, { GL_CONVOLUTION_BORDER_MODE, 1 },
+    { GL_CONVOLUTION_FILTER_SCALE, 4 }, { GL_CONVOLUTION_FILTER_BIAS, 4 },
+};
+static const struct pname_query PNAME_SETTERS[] = {
+    { "glLightModel", PNAME_TABLE(LIGHT_MODEL_COUNTS), 4, { 0 } },
+    { "glLight", PNAME_TABLE(LIGHT_COUNTS), 4, { GL_LIGHT0, GL_LIGHT7 } },
+    { "glMaterial", PNAME_TABLE(MATERIAL_SET_COUNTS), 4, { GL_FRONT, GL_BACK, GL_FRONT_AND_BACK } },
+    { "glFog", PNAME_TABLE(FOG_COUNTS), 4, { 0 } },
+    { "glPointParameter", PNAME_TABLE(POINT_PARAMETER_COUNTS), 3, { 0 } },
+    { "glTexEnv", PNAME_TABLE(TEX_ENV_COUNTS), 4, { GL_TEXTURE_ENV, GL_TEXTURE_FILTER_CONTROL } },
+    { "glTexGen", PNAME_TABLE(TEX_GEN_COUNTS), 4, { GL_S, GL_Q } },
+    { "glTexParameter", PNAME_TABLE(TEX_PARAMETER_SET_COUNTS), 4,
+      { GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP } },
+    { "glColorTableParameter", PNAME_TABLE(COLOR_TABLE_SET_COUNTS), 4,
+      { GL_COLOR_TABLE, GL_POST_CONVOLUTION_COLOR_TABLE, GL_POST_COLOR_MATRIX_COLOR_TABLE } },
+    { "glConvolutionParameter", PNAME_TABLE(CONVOLUTION_SET_COUNTS), 4,
+      { GL_CONVOLUTION_1D, GL_CONVOLUTION_2D, GL_SEPARABLE_2D } },
+};
+
 #endif

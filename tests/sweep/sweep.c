@@ -447,16 +447,13 @@ static long long vector_count(const char *name)
     return 0;
 }
 
-/* Commands reading the values of a pname: the most any pname takes (the queries: their
- * pname's own count, pname_counts.h). */
+/* Matrices and clip planes: how many values they read or write. */
 struct family {
     const char *prefix;
     long long values;
 };
 static const struct family PNAME_FAMILIES[] = {
-    { "glLightModel", 4 }, { "glLight", 4 }, { "glMaterial", 4 }, { "glFog", 4 },
-    { "glTexEnv", 4 }, { "glTexGen", 4 }, { "glTexParameter", 4 }, { "glPointParameter", 3 },
-    { "glColorTableParameter", 4 }, { "glConvolutionParameter", 4 }, { "glLoadMatrix", 16 }, { "glMultMatrix", 16 }, { "glLoadTransposeMatrix", 16 },
+    { "glLoadMatrix", 16 }, { "glMultMatrix", 16 }, { "glLoadTransposeMatrix", 16 },
     { "glMultTransposeMatrix", 16 }, { "glClipPlane", 4 }, { "glGetClipPlane", 4 },
 };
 
@@ -467,6 +464,16 @@ static const struct pname_query *pname_query(const char *name)
     for (i = 0; i < sizeof PNAME_QUERIES / sizeof PNAME_QUERIES[0]; i++)
         if (starts(name, PNAME_QUERIES[i].prefix))
             return &PNAME_QUERIES[i];
+    return NULL;
+}
+
+/* The pname table of a command setting a pname's values, or NULL. */
+static const struct pname_query *pname_setter(const char *name)
+{
+    size_t i;
+    for (i = 0; i < sizeof PNAME_SETTERS / sizeof PNAME_SETTERS[0]; i++)
+        if (starts(name, PNAME_SETTERS[i].prefix))
+            return &PNAME_SETTERS[i];
     return NULL;
 }
 
@@ -536,10 +543,10 @@ static long long pointer_rule(int fn, const union sweep_arg *a, int k)
         return SELECT_POINTER;
     if (same(name, "fflMakeCurrent") || same(name, "fflDestroyContext"))
         return CONTEXT_POINTER;
-    if (pname_query(name) && pname_index(fn) >= 0) {
+    if ((pname_query(name) || pname_setter(name)) && pname_index(fn) >= 0) {
         /* The pname's count from the state tables; a pname they lack gets the family's
-         * room (make_call fails the call if it succeeds). */
-        const struct pname_query *q = pname_query(name);
+         * room (make_call fails a query that accepts it). */
+        const struct pname_query *q = pname_query(name) ? pname_query(name) : pname_setter(name);
         int count = pname_count(q, ENUM_ARG(pname_index(fn)));
         return (count == PNAME_UNKNOWN ? q->room : count) * e;
     }
@@ -1366,6 +1373,47 @@ static void check_pname_counts(void)
     drain_errors();
 }
 
+/* The commands setting a pname's values, each pname of their tables with exactly its count
+ * of (hostile) values against the guard page, in a context of their own: a read past the
+ * count faults; the const buffer must stay unchanged (R2). */
+static long long pname_reads_checked;
+static void check_pname_reads(void)
+{
+    FflContext *context = fflCreateContext();
+    int fn, t;
+    size_t i;
+    fflMakeCurrent(context);
+    for (fn = 0; fn < SWEEP_FUNCTION_COUNT; fn++) {
+        const struct sweep_function *f = &SWEEP_FUNCTIONS[fn];
+        const struct pname_query *q = pname_setter(f->name);
+        int at = pname_index(fn), in = f->count - 1;
+        if (!q || at < 0 || f->params[in].kind != SWEEP_POINTER)
+            continue;
+        for (t = 0; t == 0 || (t < 4 && q->targets[t]); t++)
+            for (i = 0; i < q->size; i++) {
+                union sweep_arg a[MAX_PARAMS], ret;
+                size_t e = f->params[in].size;
+                GLenum error;
+                drain_errors();
+                memset(a, 0, sizeof a);
+                a[0].i = q->targets[t];
+                a[at].i = q->table[i].pname;
+                a[in].p = slot_buffer(MAX_PARAMS, (size_t)q->table[i].count * e, e, 0, 0);
+                slot_save(MAX_PARAMS);
+                current_fn = fn;
+                memcpy(current_args, a, sizeof a);
+                current_situation = "every pname";
+                f->call(a, &ret);
+                error = glGetError();
+                slot_check(MAX_PARAMS, error != GL_NO_ERROR, "params");
+                pname_reads_checked++;
+            }
+    }
+    current_fn = -1;
+    fflMakeCurrent(main_context);
+    fflDestroyContext(context);
+}
+
 /* Makes the call in `situation`, checks the rules; returns the error it raised. */
 static GLenum make_call(int fn, enum situation situation)
 {
@@ -1526,8 +1574,10 @@ int main(void)
         check_get_forms(SWEEP_ENUMS[i]);
     start = now();
     check_pname_counts();
+    check_pname_reads();
     printf("pnames: %lld accepted (query, target, pname) calls of %d queries write their state-table "
-           "count, in %.1f s\n", pnames_checked, pname_functions, now() - start);
+           "count; %lld (command, target, pname) calls read no more than it; in %.1f s\n",
+           pnames_checked, pname_functions, pname_reads_checked, now() - start);
 
     /* Every function, every situation, `rounds` argument draws each. */
     start = now();
