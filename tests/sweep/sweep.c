@@ -27,6 +27,10 @@
  *       glMultiDraw*, documented as checked at compile time, and glNewList (nested:
  *       GL_INVALID_OPERATION).
  *   R6  glGetString returns NULL or a NUL-terminated string.
+ *   R7  a pname-taking query accepts only the pnames of its table in pname_counts.h (the
+ *       GL 1.5 state tables' counts), and writes each one's count of values: beyond the
+ *       count its buffer holds canaries up to the most any pname takes (R2 reports a write
+ *       there), and every (query, header enum) pair is tried once with exact counts.
  * Phases: each function SWEEP_ROUNDS times in each situation (outside, between
  * glBegin/glEnd, compiling a GL_COMPILE list, then calling the list, and
  * GL_COMPILE_AND_EXECUTE), then random functions in random order with random arguments
@@ -85,6 +89,7 @@ struct sweep_function {
 };
 
 #include "sweep_functions.h"
+#include "pname_counts.h"
 
 /* ---- deterministic random numbers (splitmix64) ---- */
 static unsigned long long rng_state;
@@ -200,12 +205,13 @@ static size_t element_align(size_t size)
     return 1;
 }
 
-/* Places a buffer of `bytes` against the slot's end; fills it by `fill`. */
-static void *slot_buffer(int k, size_t bytes, size_t element, int output, int fill)
+/* Places a buffer of `bytes` (the allowed extent) `room` bytes before the slot's end, the
+ * bytes between them canaries; fills it by `fill`. */
+static void *slot_buffer_room(int k, size_t bytes, size_t room, size_t element, int output, int fill)
 {
     struct slot *s = &slots[k];
     size_t align = element_align(element);
-    size_t rounded = (bytes + align - 1) / align * align;
+    size_t rounded = ((room > bytes ? room : bytes) + align - 1) / align * align;
     size_t i, lead;
     if (!s->region.base)
         s->region = map_region(SLOT_BYTES);
@@ -239,6 +245,12 @@ static void *slot_buffer(int k, size_t bytes, size_t element, int output, int fi
             s->data[i] = (unsigned char)next_u64();
     }
     return s->data;
+}
+
+/* Places a buffer of `bytes` against the slot's end; fills it by `fill`. */
+static void *slot_buffer(int k, size_t bytes, size_t element, int output, int fill)
+{
+    return slot_buffer_room(k, bytes, bytes, element, output, fill);
 }
 
 static size_t saved_count(const struct slot *s)
@@ -435,24 +447,60 @@ static long long vector_count(const char *name)
     return 0;
 }
 
-/* Commands reading or writing the values of a pname: the most any pname takes. */
+/* Matrices and clip planes: how many values they read or write. */
 struct family {
     const char *prefix;
     long long values;
 };
 static const struct family PNAME_FAMILIES[] = {
-    { "glLightModel", 4 }, { "glLight", 4 }, { "glGetLight", 4 }, { "glMaterial", 4 },
-    { "glGetMaterial", 4 }, { "glFog", 4 }, { "glTexEnv", 4 }, { "glGetTexEnv", 4 },
-    { "glTexGen", 4 }, { "glGetTexGen", 4 }, { "glTexParameter", 4 }, { "glGetTexParameter", 4 },
-    { "glPointParameter", 3 }, { "glColorTableParameter", 4 }, { "glGetColorTableParameter", 4 },
-    { "glConvolutionParameter", 4 }, { "glGetConvolutionParameter", 4 },
-    { "glGetHistogramParameter", 1 }, { "glGetMinmaxParameter", 1 },
-    { "glGetTexLevelParameter", 1 }, { "glGetQuery", 1 }, { "glGetBufferParameter", 1 },
-    { "glGetBooleanv", 16 }, { "glGetIntegerv", 16 }, { "glGetFloatv", 16 }, { "glGetDoublev", 16 },
-    { "glGetFixedv", 16 }, { "glGetPointerv", 1 }, { "glGetBufferPointerv", 1 },
     { "glLoadMatrix", 16 }, { "glMultMatrix", 16 }, { "glLoadTransposeMatrix", 16 },
     { "glMultTransposeMatrix", 16 }, { "glClipPlane", 4 }, { "glGetClipPlane", 4 },
 };
+
+/* The entry of `list` whose prefix starts `name`, or NULL. */
+static const struct pname_query *pname_entry(const struct pname_query *list, size_t n, const char *name)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        if (starts(name, list[i].prefix))
+            return &list[i];
+    return NULL;
+}
+
+/* The pname table of a pname-taking query (tests/sweep/pname_counts.h), or NULL. */
+static const struct pname_query *pname_query(const char *name)
+{
+    return pname_entry(PNAME_QUERIES, sizeof PNAME_QUERIES / sizeof PNAME_QUERIES[0], name);
+}
+
+/* The pname table of a command setting a pname's values, or NULL. */
+static const struct pname_query *pname_setter(const char *name)
+{
+    return pname_entry(PNAME_SETTERS, sizeof PNAME_SETTERS / sizeof PNAME_SETTERS[0], name);
+}
+
+/* The index of fn's parameter named `pname` (-1: none). */
+static int pname_index(int fn)
+{
+    int k;
+    for (k = 0; k < SWEEP_FUNCTIONS[fn].count; k++)
+        if (same(SWEEP_FUNCTIONS[fn].params[k].name, "pname"))
+            return k;
+    return -1;
+}
+
+#define PNAME_UNKNOWN (-2)
+/* How many values the state tables give `pname` of query q; PNAME_UNKNOWN if none. */
+static int pname_count(const struct pname_query *q, GLenum pname)
+{
+    size_t i;
+    for (i = 0; i < q->size; i++)
+        if (q->table[i].pname == pname)
+            return q->table[i].count == PNAME_COMPRESSED_FORMATS
+                       ? (int)get_int(GL_NUM_COMPRESSED_TEXTURE_FORMATS)
+                       : q->table[i].count;
+    return PNAME_UNKNOWN;
+}
 
 static long long pname_values(const char *name)
 {
@@ -497,6 +545,13 @@ static long long pointer_rule(int fn, const union sweep_arg *a, int k)
         return SELECT_POINTER;
     if (same(name, "fflMakeCurrent") || same(name, "fflDestroyContext"))
         return CONTEXT_POINTER;
+    if ((pname_query(name) || pname_setter(name)) && pname_index(fn) >= 0) {
+        /* The pname's count from the state tables; a pname they lack gets the family's
+         * room (make_call fails a query that accepts it). */
+        const struct pname_query *q = pname_query(name) ? pname_query(name) : pname_setter(name);
+        int count = pname_count(q, ENUM_ARG(pname_index(fn)));
+        return (count == PNAME_UNKNOWN ? q->room : count) * e;
+    }
     if ((n = pname_values(name)) > 0)
         return n * e;
     if (same(name, "glTexImage1D"))
@@ -965,7 +1020,14 @@ static int give_pointer(int fn, union sweep_arg *a, int k)
         (same(SWEEP_FUNCTIONS[fn].name, "glMultiDrawElements") && k == 1) ||
         starts(SWEEP_FUNCTIONS[fn].name, "glDelete"))
         fill = 1;
-    a[k].p = slot_buffer(k, (size_t)rule, p->size, output, fill);
+    if (pname_query(SWEEP_FUNCTIONS[fn].name) && pname_index(fn) >= 0)
+        /* Canaries after the pname's values, up to the most any pname takes: a write past
+         * the count is reported with the pname rather than as a fault. */
+        a[k].p = slot_buffer_room(k, (size_t)rule,
+                                  (size_t)pname_query(SWEEP_FUNCTIONS[fn].name)->room * p->size,
+                                  p->size, output, fill);
+    else
+        a[k].p = slot_buffer(k, (size_t)rule, p->size, output, fill);
     return 0;
 }
 
@@ -1206,9 +1268,9 @@ static int written_elements(const unsigned char *data, int capacity, size_t size
     return 0;
 }
 
-/* R2 for the glGet*v family, where the size rule allows 16 values for every pname: the five
- * forms must write the same number of values for the same pname (a pname whose count one
- * form got wrong shows), each into a buffer of 16 against the guard page. */
+/* R2 for the glGet*v family: the five forms must write the same number of values for the
+ * same pname, each into a buffer of 16 against the guard page (R7 checks that number
+ * against the state tables). */
 static long long get_forms_compared;
 static void check_get_forms(GLenum pname)
 {
@@ -1236,6 +1298,124 @@ static void check_get_forms(GLenum pname)
             fail("R2", what);
             return;
         }
+}
+
+/* R7 for every pname-taking query and every enum of the header as its pname, in the
+ * initial state (a buffer bound, a query object ended): a pname the query accepts is in
+ * its table and the query writes exactly the table's count, canaries after it up to the
+ * most any pname takes; one it refuses writes nothing. */
+static long long pnames_checked;
+static int pname_functions;
+/* Query fn with first argument `target` and every pname: the header's enums, then the
+ * table's pnames the header has no name for. */
+static void check_pname_target(int fn, const struct pname_query *q, GLenum target)
+{
+    const struct sweep_function *f = &SWEEP_FUNCTIONS[fn];
+    int at = pname_index(fn), out = f->count - 1;
+    size_t e = f->params[out].size, i;
+    for (i = 0; i < SWEEP_ENUM_COUNT + q->size; i++) {
+        union sweep_arg a[MAX_PARAMS], ret;
+        GLenum pname = i < SWEEP_ENUM_COUNT ? SWEEP_ENUMS[i] : q->table[i - SWEEP_ENUM_COUNT].pname;
+        int count = pname_count(q, pname), written;
+        GLenum error;
+        char what[200];
+        if (i >= SWEEP_ENUM_COUNT && is_gl_enum(pname))
+            continue;
+        drain_errors();
+        memset(a, 0, sizeof a);
+        a[0].i = target;
+        a[at].i = pname;
+        a[out].p = slot_buffer_room(MAX_PARAMS, count < 0 ? 0 : (size_t)count * e,
+                                    (size_t)q->room * e, e, 1, 0);
+        current_fn = fn;
+        memcpy(current_args, a, sizeof a);
+        current_situation = "every pname";
+        f->call(a, &ret);
+        error = glGetError();
+        written = written_elements(a[out].p, q->room, e);
+        pnames_checked += error == GL_NO_ERROR;
+        if (error == GL_NO_ERROR && count == PNAME_UNKNOWN)
+            snprintf(what, sizeof what, "accepted pname 0x%x, which tests/sweep/pname_counts.h lacks",
+                     pname);
+        else if (written != (error == GL_NO_ERROR ? count : 0))
+            snprintf(what, sizeof what, "pname 0x%x: %s %d values, the state tables give %d", pname,
+                     error == GL_NO_ERROR ? "wrote" : "failed and wrote", written,
+                     error == GL_NO_ERROR ? count : 0);
+        else
+            continue;
+        printf("R7 %s(0x%x, 0x%x): %s\n", f->name, target, pname, what);
+        fail("R7", what);
+    }
+}
+
+static void check_pname_counts(void)
+{
+    GLuint buffer = 0, query = 0;
+    int fn;
+    glGenBuffers(1, &buffer);
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    glBufferData(GL_ARRAY_BUFFER, 64, NULL, GL_STATIC_DRAW);
+    glGenQueries(1, &query);
+    glBeginQuery(GL_SAMPLES_PASSED, query);
+    glEndQuery(GL_SAMPLES_PASSED);
+    drain_errors();
+    for (fn = 0; fn < SWEEP_FUNCTION_COUNT; fn++) {
+        const struct pname_query *q = pname_query(SWEEP_FUNCTIONS[fn].name);
+        int t;
+        if (!q || pname_index(fn) < 0)
+            continue;
+        pname_functions++;
+        for (t = 0; t == 0 || (t < 4 && q->targets[t]); t++)
+            check_pname_target(fn, q, same(q->prefix, "glGetQueryObject") ? query : q->targets[t]);
+    }
+    current_fn = -1;
+    glDeleteQueries(1, &query);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glDeleteBuffers(1, &buffer);
+    drain_errors();
+}
+
+/* The commands setting a pname's values, each pname of their tables with exactly its count
+ * of (hostile) values against the guard page, in a context of their own: a read past the
+ * count faults; the const buffer must stay unchanged (R2). */
+static long long pname_reads_checked;
+static int pname_setter_functions;
+static void check_pname_reads(void)
+{
+    FflContext *context = fflCreateContext();
+    int fn, t;
+    size_t i;
+    fflMakeCurrent(context);
+    for (fn = 0; fn < SWEEP_FUNCTION_COUNT; fn++) {
+        const struct sweep_function *f = &SWEEP_FUNCTIONS[fn];
+        const struct pname_query *q = pname_setter(f->name);
+        int at = pname_index(fn), in = f->count - 1;
+        if (!q || at < 0 || f->params[in].kind != SWEEP_POINTER)
+            continue;
+        pname_setter_functions++;
+        for (t = 0; t == 0 || (t < 4 && q->targets[t]); t++)
+            for (i = 0; i < q->size; i++) {
+                union sweep_arg a[MAX_PARAMS], ret;
+                size_t e = f->params[in].size;
+                GLenum error;
+                drain_errors();
+                memset(a, 0, sizeof a);
+                a[0].i = q->targets[t];
+                a[at].i = q->table[i].pname;
+                a[in].p = slot_buffer(MAX_PARAMS, (size_t)q->table[i].count * e, e, 0, 0);
+                slot_save(MAX_PARAMS);
+                current_fn = fn;
+                memcpy(current_args, a, sizeof a);
+                current_situation = "every pname";
+                f->call(a, &ret);
+                error = glGetError();
+                slot_check(MAX_PARAMS, error != GL_NO_ERROR, "params");
+                pname_reads_checked++;
+            }
+    }
+    current_fn = -1;
+    fflMakeCurrent(main_context);
+    fflDestroyContext(context);
 }
 
 /* Makes the call in `situation`, checks the rules; returns the error it raised. */
@@ -1320,6 +1500,14 @@ static GLenum make_call(int fn, enum situation situation)
         (same(f->name, "glGetBooleanv") || same(f->name, "glGetIntegerv") ||
          same(f->name, "glGetFloatv") || same(f->name, "glGetDoublev") || same(f->name, "glGetFixedv")))
         check_get_forms((GLenum)a[0].i);
+    /* (Not in the random sequence: there glGetError may run between glBegin and glEnd, or
+     * without a context, and return GL_NO_ERROR for a call that failed.) */
+    if (error == GL_NO_ERROR && situation != RANDOM && pname_query(f->name) && pname_index(fn) >= 0 &&
+        pname_count(pname_query(f->name), (GLenum)a[pname_index(fn)].i) == PNAME_UNKNOWN) {
+        snprintf(what, sizeof what, "accepted pname 0x%x, which tests/sweep/pname_counts.h lacks",
+                 (GLenum)a[pname_index(fn)].i);
+        fail("R7", what);
+    }
     if (same(f->name, "glGetString"))
         check_string(ret.p);
     if (same(f->name, "fflCreateContext"))
@@ -1388,6 +1576,12 @@ int main(void)
     /* Every enum of the header as a glGet pname, through the five forms. */
     for (i = 0; i < SWEEP_ENUM_COUNT; i++)
         check_get_forms(SWEEP_ENUMS[i]);
+    start = now();
+    check_pname_counts();
+    check_pname_reads();
+    printf("pnames: %lld accepted (query, target, pname) calls of %d queries write their state-table "
+           "count; %lld (command, target, pname) calls of %d commands read no more than it; in %.2f s\n",
+           pnames_checked, pname_functions, pname_reads_checked, pname_setter_functions, now() - start);
 
     /* Every function, every situation, `rounds` argument draws each. */
     start = now();
