@@ -44,7 +44,11 @@ pub enum RenderMode {
 /// stream into.
 #[derive(Clone, Debug)]
 pub struct PrimitiveInProgress {
-    pub(crate) pending: InputBlock,
+    /// The pending vertices: `pending[0]` fills first, then `pending[1]` (only while capture
+    /// is off: capture records units 1 and up a block at a time).
+    pub(crate) pending: [InputBlock; crate::pipeline::STREAMED_BLOCKS],
+    /// The block of `pending` being filled.
+    pub(crate) filling: usize,
     pub(crate) stream: DrawStream,
     /// Texture units 1 and up's coordinates of the pending vertices, while capture is on.
     pub(crate) units: Option<Box<crate::pipeline::units::PendingUnits>>,
@@ -94,7 +98,8 @@ pub struct Context {
     pub(crate) primitive: Option<Box<PrimitiveInProgress>>,
     /// The lit block a draw streams from, kept between blocks (it is large, and every field
     /// is rewritten for each block).
-    pub(crate) lit_block: Option<Box<crate::pipeline::block::OutputBlock>>,
+    pub(crate) lit_blocks:
+        Option<Box<[crate::pipeline::block::OutputBlock; crate::pipeline::STREAMED_BLOCKS]>>,
     pub(crate) arrays: crate::state::arrays::VertexArrays,
     pub(crate) buffers: crate::state::buffers::BufferObjects,
     pub(crate) queries: crate::state::queries::QueryObjects,
@@ -166,7 +171,7 @@ impl Context {
             feedback_address: 0,
             selection: Default::default(),
             primitive: None,
-            lit_block: None,
+            lit_blocks: None,
             arrays: Default::default(),
             buffers: Default::default(),
             queries: Default::default(),

@@ -1103,7 +1103,7 @@ impl Context {
         let mut len = 0;
         let mut run_block = |ctx: &mut Context, block: &[usize]| {
             fetch.fill(&mut input, block);
-            ctx.stream_block(&mut stream, &derived, &input);
+            ctx.stream_blocks(&mut stream, &derived, std::slice::from_ref(&input));
         };
         indices.for_each(|index| {
             block[len] = index;

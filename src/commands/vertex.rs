@@ -5,7 +5,6 @@ use glam::{Vec3, Vec4};
 use crate::context::{Context, PrimitiveInProgress};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
-use crate::pipeline::block::InputBlock;
 use crate::state::convert::Component;
 
 impl Context {
@@ -211,7 +210,8 @@ impl Context {
         let stream = self.begin_stream(mode);
         let units = self.pending_units();
         self.primitive = Some(Box::new(PrimitiveInProgress {
-            pending: InputBlock::default(),
+            pending: Default::default(),
+            filling: 0,
             stream,
             units,
         }));
@@ -267,12 +267,18 @@ impl Context {
         let Some(primitive) = &mut self.primitive else {
             return;
         };
+        let block = &mut primitive.pending[primitive.filling];
         if let Some(units) = &mut primitive.units {
-            units.set(primitive.pending.len, &self.current.other_tex_coords);
+            units.set(block.len, &self.current.other_tex_coords);
         }
-        primitive.pending.push(object, &self.current);
-        if primitive.pending.is_full() {
-            self.flush_vertices();
+        block.push(object, &self.current);
+        if block.is_full() {
+            // Capture records units 1 and up a block at a time.
+            if primitive.units.is_none() && primitive.filling + 1 < primitive.pending.len() {
+                primitive.filling += 1;
+            } else {
+                self.flush_vertices();
+            }
         }
     }
 
@@ -283,13 +289,17 @@ impl Context {
         let Some(mut primitive) = self.primitive.take() else {
             return;
         };
-        if primitive.pending.len > 0 {
+        let used = primitive.filling + usize::from(primitive.pending[primitive.filling].len > 0);
+        if used > 0 {
             let derived = self.shared_derived();
-            self.stream_block(&mut primitive.stream, &derived, &primitive.pending);
+            self.stream_blocks(&mut primitive.stream, &derived, &primitive.pending[..used]);
             if let Some(units) = &primitive.units {
-                units.capture_block(&primitive.pending, &mut self.capture);
+                units.capture_block(&primitive.pending[0], &mut self.capture);
             }
-            primitive.pending.len = 0;
+            for block in &mut primitive.pending[..used] {
+                block.len = 0;
+            }
+            primitive.filling = 0;
         }
         self.primitive = Some(primitive);
     }

@@ -94,6 +94,10 @@ pub struct DrawStream {
     polygon: Vec<PolygonVertex>,
 }
 
+/// How many blocks `Context::stream_blocks` takes at a time: two, so that the fast engine's
+/// widest kernel (two blocks in sixteen lanes) serves immediate mode too.
+pub(crate) const STREAMED_BLOCKS: usize = 2;
+
 /// What feedback needs of a vertex after its colors were chosen.
 fn feedback_vertex(ctx: &Context, v: &ProcessedVertex, color: Vec4) -> FeedbackVertex {
     FeedbackVertex {
@@ -136,21 +140,21 @@ impl Context {
         }
     }
 
-    /// Processes `input` with `derived` and streams its vertices into the draw, in order.
-    pub(crate) fn stream_block(
+    /// Processes `inputs` (at most `STREAMED_BLOCKS`) with `derived` and streams their
+    /// vertices into the draw, in order.
+    pub(crate) fn stream_blocks(
         &mut self,
         stream: &mut DrawStream,
         derived: &DerivedState,
-        input: &InputBlock,
+        inputs: &[InputBlock],
     ) {
-        let mut output = self.lit_block.take().unwrap_or_default();
-        process_blocks(
-            derived,
-            std::slice::from_ref(input),
-            std::slice::from_mut(&mut output),
-        );
-        self.stream_lit_block(stream, &output);
-        self.lit_block = Some(output);
+        let mut outputs = self.lit_blocks.take().unwrap_or_default();
+        let outputs_used = &mut outputs[..inputs.len()];
+        process_blocks(derived, inputs, outputs_used);
+        for output in outputs_used.iter() {
+            self.stream_lit_block(stream, output);
+        }
+        self.lit_blocks = Some(outputs);
     }
 
     /// Streams a processed block's vertices into the draw, in order.
