@@ -8,7 +8,7 @@
 use fflight::Context;
 use fflight::gl::*;
 use fflight::lighting::batch::{process_blocks, process_blocks_exact};
-use fflight::lighting::fast::{InstructionSet, kernel_block, kernel_blocks_on};
+use fflight::lighting::fast::{InstructionSet, kernel_blocks_on};
 use fflight::lighting::lanes::LANES;
 use fflight::pipeline::block::{InputBlock, OutputBlock};
 use fflight::pipeline::vertex::{CurrentAttribs, DerivedState, ProcessedVertex};
@@ -559,9 +559,15 @@ fn fast_engine_is_within_1e5_of_the_scalar_path() {
             worst_position = worst_position.max(position);
         }
         if let Some(fast) = &derived.fast {
-            for input in &inputs {
-                let mut output = OutputBlock::default();
-                if let Some(refused) = kernel_block(fast, input, &mut output) {
+            let (mut outputs, mut refused) = ([OutputBlock::default(); 4], [0u8; 4]);
+            if kernel_blocks_on(
+                InstructionSet::Avx2,
+                fast,
+                &inputs,
+                &mut outputs,
+                &mut refused,
+            ) {
+                for (input, refused) in inputs.iter().zip(refused) {
                     kernel_lanes += input.len;
                     served += input.len - refused.count_ones() as usize;
                 }

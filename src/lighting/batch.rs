@@ -12,13 +12,13 @@
 //! Every lane follows the scalar path's operations in the same order, so the two agree to the
 //! last bit for ordinary inputs (tests check it on random states).
 
-use glam::{DMat3, DMat4, DVec3, DVec4, Mat4, Vec3, Vec4};
+use glam::{DMat3, DMat4, DVec3, Mat4, Vec4};
 use multiversion::multiversion;
 
 use super::lanes::{LANES, Lanes, LanesF32, Vec3s, clamp01};
 use super::{PreparedFace, PreparedLight, PreparedLighting};
-use crate::pipeline::block::{InputBlock, Lanes4, OutputBlock, lanes4_get};
-use crate::pipeline::vertex::DerivedState;
+use crate::pipeline::block::{InputBlock, Lanes4, OutputBlock};
+use crate::pipeline::vertex::{DerivedState, VertexTransform};
 use crate::state::material::MaterialMask;
 
 /// Processes `inputs` into `outputs` (pairwise; the shorter decides) with the state `derived`:
@@ -355,29 +355,7 @@ fn process<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
     out.eye = to_f32(eye);
     out.clip = to_f32(transform4(&transform.projection, &eye));
     if transform.tex_gen.is_some() {
-        // Generation is rare and per vertex: each lane as the scalar path does it.
-        for lane in 0..LANES {
-            let eye = DVec4::new(
-                eye[0].0[lane],
-                eye[1].0[lane],
-                eye[2].0[lane],
-                eye[3].0[lane],
-            );
-            let normal = Vec3::new(
-                input.normal[0][lane],
-                input.normal[1][lane],
-                input.normal[2][lane],
-            );
-            let tex_coord = transform.tex_coord(
-                lanes4_get(&input.position, lane),
-                eye,
-                normal,
-                lanes4_get(&input.tex_coord, lane),
-            );
-            for (component, value) in out.tex_coord.iter_mut().zip(tex_coord.to_array()) {
-                component[lane] = value;
-            }
-        }
+        generate_tex_coords(transform, input, out, 0);
     } else {
         out.tex_coord = transform4_f32(&transform.texture, &input.tex_coord);
     }
@@ -473,5 +451,24 @@ fn homogenize(eye: [Lanes; 4]) -> Vec3s {
         x: eye[0] / divisor,
         y: eye[1] / divisor,
         z: eye[2] / divisor,
+    }
+}
+
+/// Texture coordinate generation (§2.11.4) and the texture matrix for each lane of `input`
+/// but those of `skip`, into `output`: lane by lane, as the scalar path does it (generation
+/// is rare and reads double-precision eye coordinates and normals).
+pub(crate) fn generate_tex_coords(
+    transform: &VertexTransform,
+    input: &InputBlock,
+    output: &mut OutputBlock,
+    skip: u8,
+) {
+    for lane in (0..LANES).filter(|lane| skip & (1 << lane) == 0) {
+        let (position, attribs) = input.vertex(lane);
+        let eye = transform.modelview * position.as_dvec4();
+        let tex_coord = transform.tex_coord(position, eye, attribs.normal, attribs.tex_coord);
+        for (component, value) in output.tex_coord.iter_mut().zip(tex_coord.to_array()) {
+            component[lane] = value;
+        }
     }
 }

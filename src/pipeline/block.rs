@@ -143,6 +143,33 @@ impl InputBlock {
         self.len += 1;
     }
 
+    /// Lane `lane` as glVertex saw it: object coordinates and the attributes it carries.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::block::InputBlock;
+    /// use fflight::pipeline::vertex::CurrentAttribs;
+    /// use glam::{Vec3, Vec4};
+    /// let mut block = InputBlock::default();
+    /// let attribs = CurrentAttribs { normal: Vec3::X, edge_flag: false, ..Default::default() };
+    /// block.push(Vec4::new(1.0, 2.0, 3.0, 1.0), &attribs);
+    /// let (position, got) = block.vertex(0);
+    /// assert_eq!(position, Vec4::new(1.0, 2.0, 3.0, 1.0));
+    /// assert_eq!((got.normal, got.edge_flag), (Vec3::X, false));
+    /// ```
+    pub fn vertex(&self, lane: usize) -> (Vec4, CurrentAttribs) {
+        let attribs = CurrentAttribs {
+            color: lanes4_get(&self.color, lane),
+            secondary_color: lanes4_get(&self.secondary_color, lane),
+            normal: Vec3::from_array(self.normal.map(|component| component[lane])),
+            tex_coord: lanes4_get(&self.tex_coord, lane),
+            edge_flag: self.edge_flag[lane],
+            ..CurrentAttribs::default()
+        };
+        (lanes4_get(&self.position, lane), attribs)
+    }
+
     /// Sets lane `lane`'s object coordinates; the length is unchanged.
     ///
     /// # Examples

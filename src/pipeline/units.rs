@@ -10,7 +10,7 @@
 
 use glam::{Vec3, Vec4};
 
-use super::block::{InputBlock, lanes4_get};
+use super::block::InputBlock;
 use super::capture::Capture;
 use super::vertex::VertexTransform;
 use crate::context::Context;
@@ -102,9 +102,8 @@ impl PendingUnits {
     /// attributes were just captured.
     pub(crate) fn capture_block(&self, input: &InputBlock, capture: &mut Capture) {
         for (lane, given) in self.given.iter().enumerate().take(input.len) {
-            let object = lanes4_get(&input.position, lane);
-            let normal = Vec3::from_array(input.normal.map(|component| component[lane]));
-            capture.push_units(&self.transforms.process(object, normal, given));
+            let (object, attribs) = input.vertex(lane);
+            capture.push_units(&self.transforms.process(object, attribs.normal, given));
         }
     }
 }

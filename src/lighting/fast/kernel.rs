@@ -1,7 +1,7 @@
 // The kernel's code, compiled once per instruction set: `x86.rs` includes it into a module
 // whose `with_features!` gives every function that set's target features, so the intrinsics
-// the wrappers call inline into each function (no closures here: they would not inherit
-// the features).
+// the wrappers call inline into each function. Closures here only pick fields: they would not
+// inherit the features, so no vector operation may run inside one.
 
 use std::ops::{Add, Sub};
 
@@ -497,7 +497,7 @@ fn add_light<
     };
     // Whether the specular term counts changes at n·L = 0.
     sums.refused = sums.refused | n_dot_l.abs().lt(F::splat(DISCONTINUITY));
-    sums.sensitivity = weight.mul_add(F::splat(light.diffuse_sensitivity), sums.sensitivity);
+    sums.sensitivity = weight.mul_add(F::splat(light.term_bounds[1]), sums.sensitivity);
     let face_count = if TWO_SIDE { 2 } else { 1 };
     // The faces see n·h and -n·h, of which one at most is positive: with one shininess
     // (and a power of 0 that is 0), one power of |n·h| serves both.

@@ -21,11 +21,11 @@ mod x86;
 
 use glam::{DVec3, Mat3, Mat4, Vec4};
 
-use super::batch::process_blocks_exact;
+use super::batch::{generate_tex_coords, process_blocks_exact};
 use super::lanes::LANES;
 use super::{PreparedFace, PreparedLight, PreparedLighting};
-use crate::pipeline::block::{InputBlock, OutputBlock, lanes4_get};
-use crate::pipeline::vertex::{CurrentAttribs, DerivedState, VertexTransform};
+use crate::pipeline::block::{InputBlock, OutputBlock};
+use crate::pipeline::vertex::{DerivedState, VertexTransform};
 use crate::state::light::MAX_LIGHTS;
 use crate::state::material::MaterialMask;
 
@@ -75,10 +75,9 @@ struct FastLight {
     spot_exponent: u32,
     /// (constant, linear, quadratic).
     attenuation_factors: [f32; 3],
-    /// By how much an error in n·L moves a color: the largest diffuse product of the faces.
-    diffuse_sensitivity: f32,
     /// The largest ambient, diffuse and specular products of the light's colors with the
-    /// faces' materials: what its terms weigh at most, per unit of n·L and (n·h)^s.
+    /// faces' materials: what its terms weigh at most, per unit of n·L and (n·h)^s. The
+    /// diffuse one is also by how much an error in n·L moves a color.
     term_bounds: [f32; 3],
     /// The shininess of each face times the largest specular product.
     specular_sensitivity: [f32; 2],
@@ -185,7 +184,8 @@ impl FastState {
             return Some(state);
         }
         let face_count = if lighting.two_side { 2 } else { 1 };
-        for (fast, face) in state.faces.iter_mut().zip(&lighting.faces) {
+        // Only the faces lit: one-sided lighting ignores the back material.
+        for (fast, face) in state.faces.iter_mut().zip(&lighting.faces).take(face_count) {
             *fast = FastFace::new(face)?;
         }
         let faces = &state.faces[..face_count];
@@ -286,7 +286,6 @@ impl FastLight {
                 fast.specular,
                 face.bound(MaterialMask::SPECULAR, face.specular),
             );
-            fast.diffuse_sensitivity = fast.diffuse_sensitivity.max(d);
             fast.specular_sensitivity[k] = face.shininess as f32 * s;
             for (bound, value) in fast.term_bounds.iter_mut().zip([a, d, s]) {
                 *bound = bound.max(value);
@@ -326,7 +325,13 @@ pub(crate) fn process_blocks(
             for (k, &lanes) in refused.iter().enumerate() {
                 let block = first + k;
                 if state.tex_gen {
-                    generate_tex_coords(derived, &inputs[block], &mut outputs[block], lanes);
+                    // Refused lanes get theirs from the scalar path.
+                    generate_tex_coords(
+                        &derived.transform,
+                        &inputs[block],
+                        &mut outputs[block],
+                        lanes,
+                    );
                 }
                 let mut lanes = lanes;
                 while lanes != 0 {
@@ -360,21 +365,29 @@ pub enum InstructionSet {
     Avx512,
 }
 
-/// The kernel of instruction set `set` alone on `inputs` into `outputs`, each block's refused
-/// lanes into `refused` (see `kernel_block`), or false when this CPU lacks `set`. For tests
-/// that compare the instruction sets whatever the machine would pick.
+/// The kernel of instruction set `set` alone on `inputs` into `outputs`: its outputs for the
+/// lanes it serves, and each block's refused lanes (one bit each; their outputs are to be
+/// replaced) at the block's index in `refused`; false when this CPU lacks `set`. Texture
+/// coordinate generation is left out. For tests that compare the instruction sets whatever
+/// the machine would pick, and measure what the kernel serves.
 ///
 /// # Examples
 ///
 /// ```
 /// use fflight::lighting::fast::{InstructionSet, kernel_blocks_on};
 /// use fflight::pipeline::block::{InputBlock, OutputBlock};
+/// use fflight::pipeline::vertex::CurrentAttribs;
 /// use fflight::Context;
+/// use glam::Vec4;
 /// let mut ctx = Context::new();
 /// let fast = ctx.derived().fast.clone().unwrap();
-/// let (inputs, mut outputs, mut refused) = ([InputBlock::default(); 3], [OutputBlock::default(); 3], [0; 3]);
-/// if kernel_blocks_on(InstructionSet::Avx2, &fast, &inputs, &mut outputs, &mut refused) {
-///     assert_eq!(refused, [0; 3]); // empty blocks: nothing to refuse
+/// let mut input = InputBlock::default();
+/// input.push(Vec4::new(f32::NAN, 0.0, 0.0, 1.0), &CurrentAttribs::default());
+/// input.push(Vec4::new(1.0, 2.0, 3.0, 1.0), &CurrentAttribs::default());
+/// let (mut outputs, mut refused) = ([OutputBlock::default()], [0]);
+/// if kernel_blocks_on(InstructionSet::Avx2, &fast, &[input], &mut outputs, &mut refused) {
+///     assert_eq!(refused, [0b01]); // the NaN lane goes to the scalar path
+///     assert_eq!(outputs[0].vertex(1).clip, Vec4::new(1.0, 2.0, 3.0, 1.0));
 /// }
 /// ```
 pub fn kernel_blocks_on(
@@ -398,50 +411,6 @@ pub fn kernel_blocks_on(
     }
 }
 
-/// The kernel alone on one block: its outputs for the lanes it serves, and the lanes it
-/// refuses (one bit each; their outputs are to be replaced), or `None` when the CPU lacks
-/// its instructions. Texture coordinate generation is left out. For tests and measurements.
-///
-/// # Examples
-///
-/// ```
-/// use fflight::lighting::fast::kernel_block;
-/// use fflight::pipeline::block::{InputBlock, OutputBlock};
-/// use fflight::pipeline::vertex::CurrentAttribs;
-/// use fflight::Context;
-/// use glam::Vec4;
-/// let mut ctx = Context::new();
-/// let fast = ctx.derived().fast.clone().unwrap();
-/// let mut input = InputBlock::default();
-/// input.push(Vec4::new(f32::NAN, 0.0, 0.0, 1.0), &CurrentAttribs::default());
-/// input.push(Vec4::new(1.0, 2.0, 3.0, 1.0), &CurrentAttribs::default());
-/// let mut output = OutputBlock::default();
-/// if let Some(refused) = kernel_block(&fast, &input, &mut output) {
-///     assert_eq!(refused, 0b01); // the NaN lane goes to the scalar path
-///     assert_eq!(output.vertex(1).clip, Vec4::new(1.0, 2.0, 3.0, 1.0));
-/// }
-/// ```
-pub fn kernel_block(state: &FastState, input: &InputBlock, output: &mut OutputBlock) -> Option<u8> {
-    #[cfg(target_arch = "x86_64")]
-    {
-        x86::kernel().map(|kernel| {
-            let mut refused = [0];
-            kernel(
-                state,
-                std::slice::from_ref(input),
-                std::slice::from_mut(output),
-                &mut refused,
-            );
-            refused[0]
-        })
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        let _ = (state, input, output);
-        None
-    }
-}
-
 /// Lanes the kernel refused, gathered from the blocks of a call into one block and lit again
 /// by the double-precision engine eight at a time (the scalar path's results to the last bit,
 /// at a fraction of its cost per vertex).
@@ -455,7 +424,7 @@ struct RefusedLanes {
 impl RefusedLanes {
     /// Queues lane `lane` of `input`, block `block` of the call; true when the queue is full.
     fn push(&mut self, input: &InputBlock, block: usize, lane: usize) -> bool {
-        let (position, attribs) = lane_input(input, lane);
+        let (position, attribs) = input.vertex(lane);
         self.origins[self.input.len] = (block, lane);
         self.input.push(position, &attribs);
         self.input.is_full()
@@ -467,7 +436,7 @@ impl RefusedLanes {
         if len <= 2 {
             // Fewer lanes than the block engine's cost: one by one (the same results).
             for (k, &(block, lane)) in self.origins[..len].iter().enumerate() {
-                let (position, attribs) = lane_input(&self.input, k);
+                let (position, attribs) = self.input.vertex(k);
                 outputs[block].set_vertex(lane, &derived.process(position, &attribs));
             }
         } else {
@@ -479,41 +448,4 @@ impl RefusedLanes {
         }
         self.input.len = 0;
     }
-}
-
-/// Texture coordinate generation, lane by lane as the scalar path does it (generation is
-/// rare; it reads double-precision eye coordinates and normals). Refused lanes are done in
-/// full by `relight_refused`.
-fn generate_tex_coords(
-    derived: &DerivedState,
-    input: &InputBlock,
-    output: &mut OutputBlock,
-    refused: u8,
-) {
-    let transform = &derived.transform;
-    for lane in (0..input.len).filter(|lane| refused & (1 << lane) == 0) {
-        let (position, attribs) = lane_input(input, lane);
-        let eye = transform.modelview * position.as_dvec4();
-        let tex_coord = transform.tex_coord(position, eye, attribs.normal, attribs.tex_coord);
-        for (component, value) in output.tex_coord.iter_mut().zip(tex_coord.to_array()) {
-            component[lane] = value;
-        }
-    }
-}
-
-/// Lane `lane` of `input` as glVertex would have seen it.
-fn lane_input(input: &InputBlock, lane: usize) -> (Vec4, CurrentAttribs) {
-    let attribs = CurrentAttribs {
-        color: lanes4_get(&input.color, lane),
-        secondary_color: lanes4_get(&input.secondary_color, lane),
-        normal: glam::Vec3::new(
-            input.normal[0][lane],
-            input.normal[1][lane],
-            input.normal[2][lane],
-        ),
-        tex_coord: lanes4_get(&input.tex_coord, lane),
-        edge_flag: input.edge_flag[lane],
-        ..CurrentAttribs::default()
-    };
-    (lanes4_get(&input.position, lane), attribs)
 }
