@@ -117,30 +117,32 @@ pub extern "C" fn fflCapturePrimitiveCount() -> GLuint {
     with_context(|ctx| Ok(gl_uint(ctx.captured().primitives().len())))
 }
 
-/// Copies `items[first..first + count]` (fewer at the end) to `out`, converted; returns how
-/// many were copied. NULL `out` with a positive count is GL_INVALID_VALUE.
+/// Copies items `first..first + count` of `len` (fewer at the end), each made by `item` from
+/// its index, to `out`; returns how many were copied. NULL `out` with a positive count is
+/// GL_INVALID_VALUE.
 ///
 /// # Safety
 /// A non-NULL `out` must have room for `count` values.
-unsafe fn copy_out<T, C: for<'a> From<&'a T>>(
-    items: &[T],
+unsafe fn copy_out<C>(
+    len: usize,
     first: GLuint,
     count: GLuint,
     out: *mut C,
+    item: impl Fn(usize) -> C,
 ) -> GlResult<GLuint> {
-    let items = items.get(first as usize..).unwrap_or(&[]);
-    let items = &items[..items.len().min(count as usize)];
-    if items.is_empty() {
+    let first = first as usize;
+    let copied = len.saturating_sub(first).min(count as usize);
+    if copied == 0 {
         return Ok(0);
     }
     if out.is_null() {
         return Err(GlError::InvalidValue);
     }
-    for (k, item) in items.iter().enumerate() {
+    for k in 0..copied {
         // SAFETY: the caller guarantees room for `count` values; k < count.
-        unsafe { out.add(k).write(C::from(item)) };
+        unsafe { out.add(k).write_unaligned(item(first + k)) };
     }
-    Ok(gl_uint(items.len()))
+    Ok(gl_uint(copied))
 }
 
 /// Copies captured vertices `first..first + count` (fewer at the end) to `vertices` and
@@ -154,8 +156,11 @@ pub unsafe extern "C" fn fflCaptureReadVertices(
     count: GLuint,
     vertices: *mut FflCapturedVertex,
 ) -> GLuint {
-    // SAFETY: forwarded from the caller.
-    with_context(|ctx| unsafe { copy_out(ctx.captured().vertices(), first, count, vertices) })
+    with_context(|ctx| {
+        let items = ctx.captured().vertices();
+        // SAFETY: forwarded from the caller.
+        unsafe { copy_out(items.len(), first, count, vertices, |k| (&items[k]).into()) }
+    })
 }
 
 /// Copies captured primitives `first..first + count` (fewer at the end) to `primitives` and
@@ -169,8 +174,15 @@ pub unsafe extern "C" fn fflCaptureReadPrimitives(
     count: GLuint,
     primitives: *mut FflCapturedPrimitive,
 ) -> GLuint {
-    // SAFETY: forwarded from the caller.
-    with_context(|ctx| unsafe { copy_out(ctx.captured().primitives(), first, count, primitives) })
+    with_context(|ctx| {
+        let items = ctx.captured().primitives();
+        // SAFETY: forwarded from the caller.
+        unsafe {
+            copy_out(items.len(), first, count, primitives, |k| {
+                (&items[k]).into()
+            })
+        }
+    })
 }
 
 /// Copies texture unit `texture`'s coordinates (after that unit's coordinate generation and
@@ -195,25 +207,14 @@ pub unsafe extern "C" fn fflCaptureReadTexCoords(
             return Err(GlError::InvalidEnum);
         }
         let capture = ctx.captured();
-        let first = first as usize;
-        let copied = (capture.vertices().len().saturating_sub(first)).min(count as usize);
-        if copied == 0 {
-            return Ok(0);
+        let len = capture.vertices().len();
+        let out = coords.cast::<[GLfloat; 4]>();
+        // SAFETY: `coords` has room for `4 * count` floats, `count` values of 4.
+        unsafe {
+            copy_out(len, first, count, out, |k| {
+                capture.tex_coord(k, unit).unwrap_or(Vec4::W).to_array()
+            })
         }
-        if coords.is_null() {
-            return Err(GlError::InvalidValue);
-        }
-        for k in 0..copied {
-            let value = capture.tex_coord(first + k, unit).unwrap_or(Vec4::W);
-            // SAFETY: the caller guarantees room for `4 * count` floats; k < count.
-            unsafe {
-                coords
-                    .add(4 * k)
-                    .cast::<[GLfloat; 4]>()
-                    .write_unaligned(value.to_array())
-            };
-        }
-        Ok(gl_uint(copied))
     })
 }
 
