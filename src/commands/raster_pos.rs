@@ -6,6 +6,7 @@ use glam::{DVec3, DVec4, Vec4};
 use crate::context::{Context, RenderMode};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
+use crate::lighting::batch::process_vertex;
 use crate::lighting::clamp01;
 use crate::pipeline::clip::point_visible;
 use crate::pipeline::feedback::FeedbackVertex;
@@ -112,7 +113,7 @@ impl Context {
         self.outside_begin_end()?;
         let attribs = self.current;
         let derived = self.derived();
-        let vertex = derived.process(object, &attribs);
+        let vertex = process_vertex(derived, object, &attribs);
         let eye_normal = derived.transform.eye_normal(attribs.normal);
         if !point_visible(&self.clip_planes(), &vertex) {
             self.raster_position.valid = false;

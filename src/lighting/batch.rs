@@ -72,6 +72,32 @@ pub fn process_blocks(derived: &DerivedState, inputs: &[InputBlock], outputs: &m
     }
 }
 
+/// One vertex through the engine `process_blocks` runs, so that a lone vertex (the raster
+/// position) is lit exactly as the same vertex among others.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::lighting::batch::process_vertex;
+/// use fflight::pipeline::vertex::CurrentAttribs;
+/// use fflight::Context;
+/// use glam::Vec4;
+/// let mut ctx = Context::new();
+/// let vertex = process_vertex(ctx.derived(), Vec4::new(1.0, 2.0, 3.0, 1.0), &CurrentAttribs::default());
+/// assert_eq!(vertex.clip, Vec4::new(1.0, 2.0, 3.0, 1.0));
+/// ```
+pub fn process_vertex(
+    derived: &DerivedState,
+    object: Vec4,
+    attribs: &crate::pipeline::vertex::CurrentAttribs,
+) -> crate::pipeline::vertex::ProcessedVertex {
+    let mut input = InputBlock::with_attribs(attribs);
+    input.push(object, attribs);
+    let mut output = [OutputBlock::default()];
+    process_blocks(derived, std::slice::from_ref(&input), &mut output);
+    output[0].vertex(0)
+}
+
 /// `process_blocks` in double precision throughout: equal to the scalar path
 /// (`DerivedState::process`) to the last bit for ordinary inputs.
 #[multiversion(targets(
