@@ -6,13 +6,11 @@ use glam::{Vec3, Vec4};
 
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
-use crate::gl::*;
 use crate::lighting::batch::process_blocks;
 use crate::lighting::lanes::LANES;
 use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::pipeline::capture::Capture;
 use crate::pipeline::vertex::{CurrentAttribs, ProcessedVertex};
-use crate::state::arrays::read_components;
 use crate::threads::threads_for;
 
 /// The layout of one strided array of floats of a bulk call: element i starts `i * stride`
@@ -90,13 +88,10 @@ impl FloatLayout {
     /// ```
     pub fn read(&self, bytes: &[u8], i: usize) -> [f32; 4] {
         let mut out = [0.0, 0.0, 0.0, 1.0];
-        let offset = self.offset(i);
-        read_components(
-            &bytes[offset..offset + 4 * self.size],
-            GL_FLOAT,
-            false,
-            &mut out[..self.size],
-        );
+        let element = &bytes[self.offset(i)..][..4 * self.size];
+        for (o, value) in out.iter_mut().zip(element.chunks_exact(4)) {
+            *o = f32::from_ne_bytes(value.try_into().expect("4 bytes"));
+        }
         out
     }
 }
