@@ -9,6 +9,7 @@ use super::with_context;
 use crate::commands::capture::BulkLayout;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
+use crate::lighting::batch::Faces;
 use crate::pipeline::block::OutputBlock;
 use crate::pipeline::capture::CapturedPrimitive;
 use crate::pipeline::vertex::ProcessedVertex;
@@ -301,8 +302,15 @@ pub unsafe extern "C" fn fflLightVertices(
             ],
             layouts: layout.outputs,
         };
+        // Without a back output, two-sided lighting need not light the back face.
+        let faces = if back_primary.is_null() && back_secondary.is_null() {
+            Faces::Front
+        } else {
+            Faces::Both
+        };
         ctx.light_blocks(
             count,
+            faces,
             |first, block| {
                 for (lane, i) in (first..first + block.len).enumerate() {
                     block.set_position(lane, Vec4::from_array(layout.positions.read(positions, i)));

@@ -6,7 +6,7 @@ use glam::{Vec3, Vec4};
 
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
-use crate::lighting::batch::process_blocks;
+use crate::lighting::batch::{Faces, process_blocks};
 use crate::lighting::lanes::LANES;
 use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::pipeline::capture::Capture;
@@ -218,7 +218,7 @@ impl Context {
                 };
                 input[0].push(position, &attribs);
             }
-            process_blocks(&derived, &input, &mut output);
+            process_blocks(&derived, Faces::Both, &input, &mut output);
             for lane in 0..output[0].len {
                 lit(first + lane, &output[0].vertex(lane));
             }
@@ -230,7 +230,8 @@ impl Context {
     /// (`threads::thread_count`): `fill(first, block)` puts vertices `first..first +
     /// block.len` into the block's lanes (the lanes hold the current attributes, and what
     /// `fill` puts there stays until it puts something else),
-    /// `emit(first, block)` receives them lit. Blocks are independent, so the results do not
+    /// `emit(first, block)` receives them lit (the colors of `faces`). Blocks are
+    /// independent, so the results do not
     /// depend on the thread count; `emit` is called from the threads, each block once.
     /// GL_INVALID_OPERATION between glBegin and glEnd.
     ///
@@ -243,6 +244,7 @@ impl Context {
     /// let lit = Mutex::new(vec![0.0f32; 20]);
     /// ctx.light_blocks(
     ///     20,
+    ///     fflight::lighting::batch::Faces::Both,
     ///     |first, block| {
     ///         for lane in 0..block.len {
     ///             let x = (first + lane) as f32;
@@ -262,6 +264,7 @@ impl Context {
     pub fn light_blocks(
         &mut self,
         count: usize,
+        faces: Faces,
         fill: impl Fn(usize, &mut InputBlock) + Sync,
         emit: impl Fn(usize, &OutputBlock) + Sync,
     ) -> GlResult {
@@ -278,7 +281,12 @@ impl Context {
                     input.len = LANES.min(count - first);
                     fill(first, input);
                 }
-                process_blocks(&derived, &inputs[..chunk_len], &mut outputs[..chunk_len]);
+                process_blocks(
+                    &derived,
+                    faces,
+                    &inputs[..chunk_len],
+                    &mut outputs[..chunk_len],
+                );
                 for (k, output) in outputs[..chunk_len].iter().enumerate() {
                     emit((chunk + k) * LANES, output);
                 }
@@ -336,6 +344,7 @@ impl Context {
         let out = OutputSlots(std::sync::Mutex::new(out));
         self.light_blocks(
             count,
+            Faces::Both,
             |first, block| {
                 for (lane, i) in (first..first + block.len).enumerate() {
                     block.set_position(lane, positions[i]);
