@@ -3,7 +3,7 @@
 //! fflCaptureReadTexCoords (every texture unit's coordinates) and the bulk
 //! lighting call fflLightVertices (see `commands::capture` and `pipeline::capture`).
 
-use glam::{Vec3, Vec4};
+use glam::Vec4;
 
 use super::with_context;
 use crate::commands::capture::BulkLayout;
@@ -313,13 +313,14 @@ pub unsafe extern "C" fn fflLightVertices(
             faces,
             |first, block| {
                 for (lane, i) in (first..first + block.len).enumerate() {
-                    block.set_position(lane, Vec4::from_array(layout.positions.read(positions, i)));
+                    layout
+                        .positions
+                        .read_lane(positions, i, &mut block.position, lane);
                     if let Some(n) = normals {
-                        let n = layout.normals.read(n, i);
-                        block.set_normal(lane, Vec3::new(n[0], n[1], n[2]));
+                        layout.normals.read_lane(n, i, &mut block.normal, lane);
                     }
                     if let Some(c) = colors {
-                        block.set_color(lane, Vec4::from_array(layout.colors.read(c, i)));
+                        layout.colors.read_lane(c, i, &mut block.color, lane);
                     }
                 }
             },

@@ -7,7 +7,7 @@ use glam::{Vec3, Vec4};
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::lighting::batch::{Faces, process_blocks};
-use crate::lighting::lanes::LANES;
+use crate::lighting::lanes::{LANES, LanesF32};
 use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::pipeline::capture::Capture;
 use crate::pipeline::vertex::{CurrentAttribs, ProcessedVertex};
@@ -76,23 +76,30 @@ impl FloatLayout {
         i * self.stride
     }
 
-    /// Element `i` of `bytes`, padded with (0, 0, 0, 1).
+    /// Element `i` of `bytes` into lane `lane` of the components `lanes`, padded with
+    /// (0, 0, 0, 1); components past the element's and the lanes' count are left out.
     ///
     /// # Examples
     ///
     /// ```
     /// use fflight::commands::capture::FloatLayout;
     /// let bytes: Vec<u8> = [1.0f32, 2.0].iter().flat_map(|v| v.to_ne_bytes()).collect();
-    /// assert_eq!(FloatLayout::new(2, 0)?.read(&bytes, 0), [1.0, 2.0, 0.0, 1.0]);
+    /// let mut lanes = [[9.0; 8]; 4];
+    /// FloatLayout::new(2, 0)?.read_lane(&bytes, 0, &mut lanes, 5);
+    /// assert_eq!(lanes.map(|c| c[5]), [1.0, 2.0, 0.0, 1.0]);
     /// # Ok::<(), fflight::GlError>(())
     /// ```
-    pub fn read(&self, bytes: &[u8], i: usize) -> [f32; 4] {
-        let mut out = [0.0, 0.0, 0.0, 1.0];
+    pub fn read_lane(&self, bytes: &[u8], i: usize, lanes: &mut [LanesF32], lane: usize) {
+        // Straight into the lanes, a component at a time: gathered into an array first, the
+        // element would be stored in pieces and loaded whole, which stalls.
         let element = &bytes[self.offset(i)..][..4 * self.size];
-        for (o, value) in out.iter_mut().zip(element.chunks_exact(4)) {
-            *o = f32::from_ne_bytes(value.try_into().expect("4 bytes"));
+        for (c, component) in lanes.iter_mut().enumerate() {
+            component[lane] = match element.get(4 * c..4 * c + 4) {
+                Some(value) => f32::from_ne_bytes(value.try_into().expect("4 bytes")),
+                None if c == 3 => 1.0,
+                None => 0.0,
+            };
         }
-        out
     }
 }
 
