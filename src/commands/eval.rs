@@ -159,7 +159,8 @@ impl Context {
         };
         let (position, evaluated, homogeneous) = vertex;
         let saved = self.current;
-        // Set for this vertex and back after it: glVertex writes them into its lane.
+        // Set for this vertex and back after it: glVertex writes them into its lane, from
+        // here to glEnd.
         self.varying.insert(Varying::COLOR);
         self.varying.insert(Varying::NORMAL);
         self.varying.insert(Varying::TEX_COORD);
@@ -192,9 +193,6 @@ impl Context {
         self.current.color = saved.color;
         self.current.normal = saved.normal;
         self.current.tex_coord = saved.tex_coord;
-        self.varying.insert(Varying::COLOR);
-        self.varying.insert(Varying::NORMAL);
-        self.varying.insert(Varying::TEX_COORD);
     }
 
     /// glEvalCoord{12}{fd}v: GL_INVALID_VALUE for a NULL (empty) vector.

@@ -335,9 +335,9 @@ impl Context {
         Ok(())
     }
 
-    /// Whether lighting a vertex costs enough that a full batch of blocks is worth sharing
-    /// with the helper thread (which costs a wake-up and a hand-over per batch): two lights
-    /// or more.
+    /// Whether lighting a vertex costs enough (two lights or more) for batches of 128
+    /// blocks: one call of the batch engine for 1024 vertices rather than 16 (immediate 8
+    /// spots, 1 thread: 64 -> 55 ns/vertex), and what the helper thread takes at a time.
     fn lighting_worth_sharing(&mut self) -> bool {
         let lighting = &self.derived().lighting;
         lighting.enabled && lighting.lights().nth(1).is_some()
@@ -409,7 +409,7 @@ impl Context {
         if block.is_full() {
             primitive.filling += 1;
             if primitive.filling == primitive.batch {
-                self.flush_vertices();
+                self.batch_full();
             }
         }
     }
@@ -421,6 +421,7 @@ impl Context {
         let Some(mut primitive) = self.primitive.take() else {
             return;
         };
+        self.stream_in_flight(&mut primitive);
         let partial = primitive.filling < primitive.batch
             && primitive.pending.block(primitive.filling).len > 0;
         let used = primitive.filling + usize::from(partial);
@@ -430,48 +431,70 @@ impl Context {
             if let Some(units) = &primitive.units {
                 units.capture_block(primitive.pending.block(0), &mut self.capture);
             }
-            for index in 0..used {
-                primitive.pending.block(index).len = 0;
-            }
+            primitive.pending.restart(used);
             primitive.filling = 0;
         }
         self.primitive = Some(primitive);
     }
 
-    /// Lights the first `used` pending blocks and streams them into the draw, in order. With
-    /// more than half a batch and more than one thread, the helper thread lights the first
-    /// half meanwhile (see `helper`).
+    /// Every block of the batch is full: when the application asked for more than one thread
+    /// (fflSetThreads or FFLIGHT_THREADS), the batch goes to the helper thread (after the one
+    /// it has, collected and streamed), and glVertex fills the next meanwhile; else it is
+    /// processed here. Not by default: on a machine with more runnable threads than cores
+    /// (2 cores, load 4 to 6) the helper measured slower than one thread (immediate 8 spots:
+    /// 116-157 against 64-113 ns/vertex), the helper rarely scheduled in time.
+    #[inline(never)]
+    fn batch_full(&mut self) {
+        let Some(mut primitive) = self.primitive.take() else {
+            return;
+        };
+        if primitive.batch == 2 * HALF_BLOCKS
+            && crate::threads::asked_thread_count().is_some_and(|n| n > 1)
+            && primitive.pending.offers.offer_now()
+        {
+            let derived = self.shared_derived();
+            self.stream_in_flight(&mut primitive);
+            let pending = &mut primitive.pending;
+            let job = pending.job.get_or_insert_with(helper::Job::new);
+            if helper::offer(job, &derived, &mut pending.halves) {
+                pending.in_flight = true;
+                // The blocks now pending are those of an earlier batch.
+                pending.fresh = 0;
+                pending.restart(primitive.batch);
+                primitive.filling = 0;
+                self.primitive = Some(primitive);
+                return;
+            }
+        }
+        self.primitive = Some(primitive);
+        self.flush_vertices();
+    }
+
+    /// Streams the batch the helper thread has, if any, once lit.
+    fn stream_in_flight(&mut self, primitive: &mut PrimitiveInProgress) {
+        let pending = &mut primitive.pending;
+        if !std::mem::take(&mut pending.in_flight) {
+            return;
+        }
+        let Some(job) = &pending.job else {
+            return;
+        };
+        let lit = helper::collect(job, &mut pending.offers);
+        for output in lit.outputs() {
+            self.stream_lit_block(&mut primitive.stream, output);
+        }
+    }
+
+    /// Lights the first `used` pending blocks and streams them into the draw, in order.
     fn light_and_stream(
         &mut self,
         primitive: &mut PrimitiveInProgress,
-        derived: &Arc<DerivedState>,
+        derived: &DerivedState,
         used: usize,
     ) {
         let PendingBlocks {
-            halves,
-            outputs,
-            job,
-            fresh,
+            halves, outputs, ..
         } = &mut primitive.pending;
-        let stream = &mut primitive.stream;
-        if used > HALF_BLOCKS
-            && crate::threads::thread_count() > 1
-            && helper::offer(job, derived, &mut halves[0])
-        {
-            // The first half now holds blocks of an earlier batch.
-            *fresh = 0;
-            let rest = used - HALF_BLOCKS;
-            process_blocks(derived, &halves[1][..rest], &mut outputs[..rest]);
-            let lit = helper::collect(job);
-            for output in &lit.outputs {
-                self.stream_lit_block(stream, output);
-            }
-            drop(lit);
-            for output in &outputs[..rest] {
-                self.stream_lit_block(stream, output);
-            }
-            return;
-        }
         let first = used.min(HALF_BLOCKS);
         process_blocks(derived, &halves[0][..first], &mut outputs[..first]);
         if used > HALF_BLOCKS {
@@ -479,7 +502,7 @@ impl Context {
             process_blocks(derived, &halves[1][..used - HALF_BLOCKS], second);
         }
         for output in &outputs[..used] {
-            self.stream_lit_block(stream, output);
+            self.stream_lit_block(&mut primitive.stream, output);
         }
     }
 }
@@ -498,20 +521,22 @@ pub(crate) fn half_blocks() -> HalfBlocks {
         .expect("HALF_BLOCKS blocks")
 }
 
-
 /// The pending vertices of a primitive in blocks, two halves of `HALF_BLOCKS`, and where they
 /// are lit.
 #[derive(Debug)]
 pub struct PendingBlocks {
     halves: [HalfBlocks; 2],
-    /// The lit blocks (of the second half only, when the helper lights the first).
+    /// The lit blocks, when lit here.
     outputs: Vec<OutputBlock>,
-    /// The first half, when offered to the helper thread.
-    job: Arc<helper::Job>,
+    /// The batch offered to the helper thread (made on the first offer: 200 KiB).
+    job: Option<Arc<helper::Job>>,
+    /// Whether `job` holds a batch to collect and stream (before the pending blocks).
+    in_flight: bool,
     /// How many blocks, from the first, have every lane's attributes set for the primitive in
     /// progress: its attributes of glBegin, which those not set since (not in
     /// `Context::varying`) still have.
     fresh: usize,
+    offers: helper::Offers,
 }
 
 impl Default for PendingBlocks {
@@ -519,25 +544,38 @@ impl Default for PendingBlocks {
         PendingBlocks {
             halves: [half_blocks(), half_blocks()],
             outputs: vec![OutputBlock::default(); 2 * HALF_BLOCKS],
-            job: helper::Job::new(),
+            job: None,
+            in_flight: false,
             fresh: 0,
+            offers: Default::default(),
         }
     }
 }
 
-/// A copy has its own job (two contexts never share one).
+/// A copy has its own job (two contexts never share one). A batch in flight stays with the
+/// original: copying a context between glBegin and glEnd while the helper thread lights a
+/// batch of it (never done by fflight itself) gives a copy without that batch.
 impl Clone for PendingBlocks {
     fn clone(&self) -> PendingBlocks {
         PendingBlocks {
             halves: self.halves.clone(),
             outputs: self.outputs.clone(),
-            job: helper::Job::new(),
+            job: None,
+            in_flight: false,
             fresh: self.fresh,
+            offers: Default::default(),
         }
     }
 }
 
 impl PendingBlocks {
+    /// The first `used` blocks are empty again.
+    fn restart(&mut self, used: usize) {
+        for index in 0..used {
+            self.block(index).len = 0;
+        }
+    }
+
     /// Block `index`, about to take its first vertex of the primitive: every lane takes
     /// `attribs` (what `InputBlock::with_attribs` gives, in place). Once a primitive per
     /// block, so glVertex writes only the attributes set since glBegin.
