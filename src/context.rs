@@ -8,7 +8,6 @@ use crate::error::{ErrorFlag, GlError, GlResult};
 use crate::gl::*;
 use crate::lighting::PreparedLighting;
 use crate::pipeline::DrawStream;
-use crate::pipeline::block::InputBlock;
 use crate::pipeline::feedback::FeedbackBuffer;
 use crate::pipeline::vertex::{CurrentAttribs, DerivedState, VertexTransform};
 use crate::state::enables::Enables;
@@ -40,15 +39,17 @@ pub enum RenderMode {
 }
 
 /// The primitive being specified between glBegin and glEnd: the vertices not processed yet
-/// (a block is processed when it fills, before a glMaterial, and at glEnd) and the draw they
-/// stream into.
+/// (a batch of blocks is processed when it fills, before a glMaterial, and at glEnd) and the
+/// draw they stream into.
 #[derive(Clone, Debug)]
 pub struct PrimitiveInProgress {
-    /// The pending vertices: `pending[0]` fills first, then `pending[1]` (only while capture
-    /// is off: capture records units 1 and up a block at a time).
-    pub(crate) pending: [InputBlock; crate::pipeline::STREAMED_BLOCKS],
-    /// The block of `pending` being filled.
+    /// The pending vertices, in blocks (reused from one primitive to the next).
+    pub(crate) pending: crate::commands::vertex::PendingBlocks,
+    /// The block being filled: `pending`'s blocks before it are full.
     pub(crate) filling: usize,
+    /// How many blocks a batch has: 1 while capture is on (it records units 1 and up a block
+    /// at a time), more where lighting is costly enough to share with a helper thread.
+    pub(crate) batch: usize,
     pub(crate) stream: DrawStream,
     /// Texture units 1 and up's coordinates of the pending vertices, while capture is on.
     pub(crate) units: Option<Box<crate::pipeline::units::PendingUnits>>,
@@ -65,6 +66,8 @@ pub struct Context {
     pub(crate) color_material: ColorMaterial,
     pub(crate) enables: Enables,
     pub(crate) current: CurrentAttribs,
+    /// The current attributes set since glBegin (what glVertex copies into its lane).
+    pub(crate) varying: crate::commands::vertex::Varying,
     pub(crate) matrices: Matrices,
     pub(crate) raster: RasterState,
     /// The state that does not change vertex processing, one attribute group each (the
@@ -96,6 +99,8 @@ pub struct Context {
     pub(crate) selection: crate::pipeline::select::Selection,
     /// Boxed: it moves out of the context and back for every block it processes.
     pub(crate) primitive: Option<Box<PrimitiveInProgress>>,
+    /// The pending blocks of the last primitive, for the next one.
+    pub(crate) spare_pending: Option<crate::commands::vertex::PendingBlocks>,
     /// The lit block a draw streams from, kept between blocks (it is large, and every field
     /// is rewritten for each block).
     pub(crate) lit_blocks:
@@ -147,6 +152,7 @@ impl Context {
             color_material: ColorMaterial::default(),
             enables: Enables::initial(),
             current: CurrentAttribs::default(),
+            varying: Default::default(),
             matrices: Matrices::default(),
             raster: RasterState::default(),
             point: Default::default(),
@@ -171,6 +177,7 @@ impl Context {
             feedback_address: 0,
             selection: Default::default(),
             primitive: None,
+            spare_pending: None,
             lit_blocks: None,
             arrays: Default::default(),
             buffers: Default::default(),

@@ -4,7 +4,7 @@
 //! the thread's slot, so GL calls reach it without any lock, and a context current on one
 //! thread cannot be made current on another.
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::sync::{Arc, Mutex};
 
 use crate::context::Context;
@@ -66,22 +66,47 @@ impl FflContext {
     }
 }
 
-/// The context current on this thread, out of its handle until released.
-struct Current {
-    handle: Arc<FflContext>,
-    context: Option<Box<Context>>,
+/// This thread's current context: its handle, and the context itself while no GL call of
+/// this thread has it out (a call takes it for its duration, so a re-entrant call finds the
+/// slot empty with a handle set, and is refused).
+struct Slot {
+    handle: RefCell<Option<Arc<FflContext>>>,
+    context: Cell<Option<Box<Context>>>,
 }
 
-impl Drop for Current {
+impl Drop for Slot {
     fn drop(&mut self) {
-        if let Some(context) = self.context.take() {
-            self.handle.put_back(context);
+        // The thread ends: its current context goes back to its handle.
+        if let (Some(handle), Some(context)) = (self.handle.get_mut().take(), self.context.take()) {
+            handle.put_back(context);
         }
     }
 }
 
+/// Gives the context back to its slot when the call ends, also when it unwinds.
+struct Borrowed<'a> {
+    slot: &'a Slot,
+    context: Option<Box<Context>>,
+}
+
+impl Drop for Borrowed<'_> {
+    #[inline(always)]
+    fn drop(&mut self) {
+        // The slot is empty while the context is out: nothing to drop (`set` would call
+        // the context's destructor on the None it replaces).
+        let empty = self.slot.context.replace(self.context.take());
+        debug_assert!(empty.is_none());
+        std::mem::forget(empty);
+    }
+}
+
 thread_local! {
-    static CURRENT: RefCell<Option<Current>> = const { RefCell::new(None) };
+    static CURRENT: Slot = const {
+        Slot {
+            handle: RefCell::new(None),
+            context: Cell::new(None),
+        }
+    };
     /// The context a thread falls back to when none is current: made on its first GL call,
     /// kept for the thread's life, so releasing another context returns to it intact.
     static DEFAULT: RefCell<Option<Arc<FflContext>>> = const { RefCell::new(None) };
@@ -97,8 +122,30 @@ fn default_handle() -> Option<Arc<FflContext>> {
         .ok()
 }
 
+impl Slot {
+    /// The thread's default context made current, when no context is (the first GL call);
+    /// `None` when one is current but a call has it out (a re-entrant call).
+    #[cold]
+    #[inline(never)]
+    fn current_default(&self) -> Option<Box<Context>> {
+        let mut handle = self.handle.try_borrow_mut().ok()?;
+        if handle.is_some() {
+            return None;
+        }
+        let default = default_handle()?;
+        // The default is current on another thread (its pointer was handed there): it is
+        // not current here too, until that thread releases it.
+        let context = default.take()?;
+        *handle = Some(default);
+        Some(context)
+    }
+}
+
 /// Runs `f` on this thread's current context; with none current, on the thread's default one.
 /// `None` when the thread is exiting or the call is re-entrant (a GL call from a callback).
+///
+/// This runs around every GL call: a thread-local access, and the context moved out of its
+/// slot and back (two pointer stores), nothing more while a context is current.
 ///
 /// # Examples
 ///
@@ -107,30 +154,31 @@ fn default_handle() -> Option<Arc<FflContext>> {
 /// // The thread's default context, created on first use, as the C entry points see it.
 /// with_current(|ctx| ctx.set_capability(GL_LIGHTING, true)).unwrap()?;
 /// assert_eq!(with_current(|ctx| ctx.is_enabled(GL_LIGHTING)).unwrap(), Ok(true));
+/// // A GL call made from inside a GL call is refused.
+/// assert_eq!(with_current(|_| with_current(|_| ())), Some(None));
 /// # Ok::<(), fflight::GlError>(())
 /// ```
+#[inline(always)]
 pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
     CURRENT
         .try_with(|slot| {
-            let mut slot = slot.try_borrow_mut().ok()?;
-            if slot.is_none() {
-                let handle = default_handle()?;
-                // The default is current on another thread (its pointer was handed there):
-                // it is not current here too, until that thread releases it.
-                let context = handle.take()?;
-                *slot = Some(Current {
-                    handle,
-                    context: Some(context),
-                });
-            }
-            slot.as_mut()?.context.as_deref_mut().map(f)
+            let context = match slot.context.take() {
+                Some(context) => context,
+                None => slot.current_default()?,
+            };
+            let mut borrowed = Borrowed {
+                slot,
+                context: Some(context),
+            };
+            borrowed.context.as_deref_mut().map(f)
         })
         .ok()
         .flatten()
 }
 
 /// Makes `handle` current on this thread (`None` releases the current one). A context that is
-/// current on another thread is GL_INVALID_OPERATION, and nothing changes.
+/// current on another thread is GL_INVALID_OPERATION, and nothing changes; so is a call made
+/// while a GL call of this thread is running.
 ///
 /// # Examples
 ///
@@ -147,25 +195,36 @@ pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
 pub fn make_current(handle: Option<Arc<FflContext>>) -> GlResult {
     CURRENT
         .try_with(|slot| {
-            let mut slot = slot
+            let mut current = slot
+                .handle
                 .try_borrow_mut()
                 .map_err(|_| GlError::InvalidOperation)?;
-            if let (Some(current), Some(handle)) = (slot.as_ref(), handle.as_ref())
-                && Arc::ptr_eq(&current.handle, handle)
+            let context = slot.context.take();
+            if current.is_some() && context.is_none() {
+                return Err(GlError::InvalidOperation); // a GL call has it out
+            }
+            if let (Some(current), Some(handle)) = (current.as_ref(), handle.as_ref())
+                && Arc::ptr_eq(current, handle)
             {
+                slot.context.set(context);
                 return Ok(());
             }
-            let next = match handle {
-                Some(handle) => {
-                    let context = handle.take().ok_or(GlError::InvalidOperation)?;
-                    Some(Current {
-                        handle,
-                        context: Some(context),
-                    })
-                }
+            let next = match &handle {
+                Some(handle) => match handle.take() {
+                    Some(next) => Some(next),
+                    None => {
+                        slot.context.set(context);
+                        return Err(GlError::InvalidOperation);
+                    }
+                },
                 None => None,
             };
-            *slot = next; // the previous context goes back to its handle
+            // The previous context goes back to its handle.
+            if let (Some(previous), Some(context)) = (current.take(), context) {
+                previous.put_back(context);
+            }
+            *current = handle;
+            slot.context.set(next);
             Ok(())
         })
         .unwrap_or(Err(GlError::InvalidOperation))
@@ -185,10 +244,7 @@ pub fn make_current(handle: Option<Arc<FflContext>>) -> GlResult {
 /// ```
 pub fn current_handle() -> Option<Arc<FflContext>> {
     CURRENT
-        .try_with(|slot| {
-            let slot = slot.try_borrow().ok()?;
-            slot.as_ref().map(|current| current.handle.clone())
-        })
+        .try_with(|slot| slot.handle.try_borrow().ok()?.clone())
         .ok()
         .flatten()
 }

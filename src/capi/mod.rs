@@ -44,6 +44,24 @@ pub(crate) fn with_context<R: Default>(command: impl FnOnce(&mut Context) -> GlR
     .unwrap_or_default()
 }
 
+/// `with_context` compiled into its caller: for the vertex attribute commands, called
+/// millions of times a frame, whose arguments then stay in registers (through a call they
+/// go through the stack, and reading a vector back just written as scalars stalls).
+#[inline(always)]
+pub(crate) fn with_context_inline<R: Default>(
+    command: impl FnOnce(&mut Context) -> GlResult<R>,
+) -> R {
+    catch_unwind(AssertUnwindSafe(|| {
+        current::with_current(|ctx| {
+            let result = command(ctx);
+            ctx.settle(result)
+        })
+    }))
+    .ok()
+    .flatten()
+    .unwrap_or_default()
+}
+
 /// Whether `count` values are more than any memory holds (isize::MAX bytes): a size made of
 /// hostile arguments, which no pointer can honor; it reads nothing, like NULL.
 fn beyond_memory<T>(count: usize) -> bool {

@@ -3,6 +3,7 @@
 
 use glam::{DVec3, Vec3, Vec4};
 
+use crate::commands::vertex::Varying;
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
@@ -158,6 +159,11 @@ impl Context {
         };
         let (position, evaluated, homogeneous) = vertex;
         let saved = self.current;
+        // Set for this vertex and back after it: glVertex writes them into its lane, from
+        // here to glEnd.
+        self.varying.insert(Varying::COLOR);
+        self.varying.insert(Varying::NORMAL);
+        self.varying.insert(Varying::TEX_COORD);
         if enabled[COLOR_4] {
             self.current.color = Vec4::from_array(evaluate(COLOR_4).value.map(|c| c as f32));
         }

@@ -123,6 +123,10 @@ impl Context {
     pub fn multi_tex_coord(&mut self, target: GLenum, tex_coord: Vec4) -> GlResult {
         let unit = unit_of(target)?;
         self.current.set_unit_tex_coord(unit, tex_coord);
+        if unit == 0 {
+            self.varying
+                .insert(crate::commands::vertex::Varying::TEX_COORD);
+        }
         Ok(())
     }
 

@@ -1,0 +1,311 @@
+//! Immediate mode's buffering (glBegin / glVertex / glEnd): vertices wait in blocks and are
+//! lit a batch at a time, with only the attributes set since glBegin written per vertex. Every
+//! vertex must still be fed back exactly as if it were drawn alone with the attributes current
+//! at its glVertex, whatever changed between vertices, wherever the blocks and batches break,
+//! and whatever the thread count (a helper thread lights half of the large batches).
+
+use fflight::{Context, gl::*};
+use glam::{Vec3, Vec4};
+
+/// A small deterministic generator (the same sequence on every run).
+struct Lcg(u32);
+
+impl Lcg {
+    fn next(&mut self) -> f32 {
+        self.0 = self.0.wrapping_mul(1664525).wrapping_add(1013904223);
+        (self.0 >> 8) as f32 / 16777216.0
+    }
+
+    fn signed(&mut self) -> f32 {
+        2.0 * self.next() - 1.0
+    }
+
+    fn chance(&mut self, p: f32) -> bool {
+        self.next() < p
+    }
+}
+
+/// `lights` spot lights (attenuated, local viewer, two-sided, GL_NORMALIZE), or lighting off
+/// for 0; color material on (so glColor between vertices changes the lit color).
+fn scene(lights: u32) -> Context {
+    let mut ctx = Context::new();
+    ctx.viewport(0, 0, 256, 256).unwrap();
+    if lights > 0 {
+        ctx.set_capability(GL_LIGHTING, true).unwrap();
+        ctx.set_capability(GL_NORMALIZE, true).unwrap();
+        ctx.set_capability(GL_COLOR_MATERIAL, true).unwrap();
+        ctx.color_material(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE)
+            .unwrap();
+        ctx.light_model_scalar(GL_LIGHT_MODEL_TWO_SIDE, 1.0)
+            .unwrap();
+        ctx.light_model_scalar(GL_LIGHT_MODEL_LOCAL_VIEWER, 1.0)
+            .unwrap();
+        ctx.material(GL_FRONT_AND_BACK, GL_SPECULAR, &[0.5, 0.5, 0.5, 1.0])
+            .unwrap();
+        ctx.material(GL_FRONT_AND_BACK, GL_SHININESS, &[32.0])
+            .unwrap();
+    }
+    for i in 0..lights {
+        let light = GL_LIGHT0 + i;
+        let a = std::f32::consts::FRAC_PI_4 * i as f32;
+        let (x, y) = (0.5 * a.cos(), 0.5 * a.sin());
+        ctx.set_capability(light, true).unwrap();
+        ctx.light(light, GL_POSITION, &[x, y, 1.0, 1.0]).unwrap();
+        ctx.light(light, GL_SPOT_DIRECTION, &[-x, -y, -1.0])
+            .unwrap();
+        ctx.light(light, GL_SPOT_CUTOFF, &[60.0]).unwrap();
+        ctx.light(light, GL_SPOT_EXPONENT, &[2.0]).unwrap();
+        ctx.light(light, GL_LINEAR_ATTENUATION, &[0.1]).unwrap();
+        ctx.light(light, GL_SPECULAR, &[0.3, 0.6, 0.9, 1.0])
+            .unwrap();
+    }
+    // A curve for glEvalCoord1: positions and colors.
+    let points = [-0.5f32, -0.5, 0.2, 0.5, 0.3, -0.2, 0.1, 0.6, 0.0];
+    ctx.map(
+        GL_MAP1_VERTEX_3,
+        1,
+        [0.0, 1.0, 0.0, 1.0],
+        [3, 0],
+        [3, 0],
+        &points,
+    )
+    .unwrap();
+    let colors = [
+        1.0f32, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.5,
+    ];
+    ctx.map(
+        GL_MAP1_COLOR_4,
+        1,
+        [0.0, 1.0, 0.0, 1.0],
+        [4, 0],
+        [3, 0],
+        &colors,
+    )
+    .unwrap();
+    ctx.set_capability(GL_MAP1_VERTEX_3, true).unwrap();
+    ctx.set_capability(GL_MAP1_COLOR_4, true).unwrap();
+    ctx
+}
+
+/// What may happen before a vertex.
+#[derive(Clone, Copy, Debug)]
+enum Step {
+    Color(Vec4),
+    Normal(Vec3),
+    TexCoord(Vec4),
+    Unit0TexCoord(Vec4),
+    SecondaryColor([f32; 3]),
+    EdgeFlag(bool),
+    /// glMaterial between vertices: the pending vertices are lit with the material before.
+    Shininess(f32),
+    Vertex(Vec4),
+    /// glEvalCoord1: a vertex with the evaluated color, the current one unchanged.
+    Eval(f64),
+}
+
+fn run(ctx: &mut Context, step: Step) {
+    match step {
+        Step::Color(c) => ctx.color(c),
+        Step::Normal(n) => ctx.normal(n),
+        Step::TexCoord(t) => ctx.tex_coord(t),
+        Step::Unit0TexCoord(t) => ctx.multi_tex_coord(GL_TEXTURE0, t).unwrap(),
+        Step::SecondaryColor(c) => ctx.secondary_color(c),
+        Step::EdgeFlag(f) => ctx.edge_flag(f),
+        Step::Shininess(s) => ctx.material(GL_FRONT_AND_BACK, GL_SHININESS, &[s]).unwrap(),
+        Step::Vertex(v) => ctx.vertex(v),
+        Step::Eval(u) => ctx.eval_coord(1, u, 0.0),
+    }
+}
+
+/// Which changes `steps` makes, one bit per kind (`Step`'s order, glMaterial and
+/// glEvalCoord1 last).
+const ALL: u32 = 0xff;
+
+/// `vertices` vertices with random attribute changes between them, of the kinds in `kinds`:
+/// each changes now and then, so blocks start with some set and some not since glBegin.
+fn steps(seed: u32, vertices: usize, kinds: u32) -> Vec<Step> {
+    let mut r = Lcg(seed);
+    let mut steps = Vec::new();
+    for _ in 0..vertices {
+        let v4 = |r: &mut Lcg| Vec4::new(r.next(), r.next(), r.next(), 1.0);
+        // One draw per kind whatever `kinds`, so the vertices are the same.
+        let chance = |r: &mut Lcg, kind: u32, p: f32| r.chance(p) && kinds & (1 << kind) != 0;
+        if chance(&mut r, 0, 0.05) {
+            steps.push(Step::Color(v4(&mut r)));
+        }
+        if chance(&mut r, 1, 0.3) {
+            steps.push(Step::Normal(Vec3::new(
+                r.signed(),
+                r.signed(),
+                r.signed() + 1.5,
+            )));
+        }
+        if chance(&mut r, 2, 0.02) {
+            steps.push(Step::TexCoord(v4(&mut r)));
+        }
+        if chance(&mut r, 3, 0.02) {
+            steps.push(Step::Unit0TexCoord(v4(&mut r)));
+        }
+        if chance(&mut r, 4, 0.02) {
+            steps.push(Step::SecondaryColor([r.next(), r.next(), r.next()]));
+        }
+        if chance(&mut r, 5, 0.02) {
+            steps.push(Step::EdgeFlag(r.chance(0.5)));
+        }
+        if chance(&mut r, 6, 0.002) {
+            steps.push(Step::Shininess(1.0 + 100.0 * r.next()));
+        }
+        if chance(&mut r, 7, 0.03) {
+            steps.push(Step::Eval(r.next() as f64));
+        } else {
+            let (x, y, z) = (0.9 * r.signed(), 0.9 * r.signed(), 0.9 * r.signed());
+            steps.push(Step::Vertex(Vec4::new(x, y, z, 1.0)));
+        }
+    }
+    steps
+}
+
+fn feedback(ctx: &mut Context, kind: GLenum, draw: impl FnOnce(&mut Context)) -> Vec<f32> {
+    ctx.feedback_buffer(1 << 22, kind, 1).unwrap();
+    ctx.render_mode(GL_FEEDBACK).unwrap();
+    draw(ctx);
+    let (count, finished) = ctx.render_mode(GL_RENDER).unwrap();
+    assert!(count > 0);
+    finished.unwrap().values
+}
+
+/// The steps in one glBegin(GL_POINTS) / glEnd.
+fn together(ctx: &mut Context, steps: &[Step]) -> Vec<f32> {
+    feedback(ctx, GL_4D_COLOR_TEXTURE, |ctx| {
+        ctx.begin(GL_POINTS).unwrap();
+        steps.iter().for_each(|&s| run(ctx, s));
+        ctx.end().unwrap();
+    })
+}
+
+/// Each vertex in a glBegin / glEnd of its own, after the same attribute changes.
+fn apart(ctx: &mut Context, steps: &[Step]) -> Vec<f32> {
+    feedback(ctx, GL_4D_COLOR_TEXTURE, |ctx| {
+        for &step in steps {
+            match step {
+                Step::Vertex(_) | Step::Eval(_) => {
+                    ctx.begin(GL_POINTS).unwrap();
+                    run(ctx, step);
+                    ctx.end().unwrap();
+                }
+                _ => run(ctx, step),
+            }
+        }
+    })
+}
+
+#[test]
+fn each_vertex_takes_the_attributes_current_at_its_glvertex() {
+    // No lighting, one light (small batches), three lights (large batches); every kind of
+    // change alone, then all of them.
+    for (seed, lights) in [(1, 0), (2, 1), (3, 3)] {
+        for kinds in (0..8).map(|kind| 1 << kind).chain([ALL]) {
+            let steps = steps(seed, 3000, kinds);
+            let got = together(&mut scene(lights), &steps);
+            let expected = apart(&mut scene(lights), &steps);
+            assert_eq!(got.len(), expected.len(), "{lights} lights");
+            let first = got
+                .iter()
+                .zip(&expected)
+                .position(|(a, b)| a.to_bits() != b.to_bits());
+            assert_eq!(
+                first, None,
+                "{lights} lights, changes {kinds:#x}: first differing value"
+            );
+        }
+    }
+}
+
+#[test]
+fn current_attributes_after_glend_are_the_last_set() {
+    let mut ctx = scene(3);
+    let steps = steps(4, 1000, ALL);
+    together(&mut ctx, &steps);
+    let last = |pick: &dyn Fn(&Step) -> Option<Vec4>| steps.iter().rev().find_map(pick);
+    let color = last(&|s| match s {
+        Step::Color(c) => Some(*c),
+        _ => None,
+    });
+    let normal = last(&|s| match s {
+        Step::Normal(n) => Some(n.extend(0.0)),
+        _ => None,
+    });
+    assert_eq!(
+        ctx.get(GL_CURRENT_COLOR).unwrap().as_floats(),
+        color.unwrap().to_array()
+    );
+    assert_eq!(
+        ctx.get(GL_CURRENT_NORMAL).unwrap().as_floats(),
+        normal.unwrap().truncate().to_array()
+    );
+}
+
+/// Triangles with edge flags in GL_LINE mode: the edge flag of each vertex decides its edges.
+#[test]
+fn edge_flags_between_vertices_are_honored() {
+    let steps = steps(5, 3000, ALL);
+    let draw = |ctx: &mut Context, steps: &[Step], apart: bool| {
+        ctx.polygon_mode(GL_FRONT_AND_BACK, GL_LINE).unwrap();
+        feedback(ctx, GL_3D_COLOR, |ctx| {
+            let vertices: Vec<&Step> = steps.iter().collect();
+            let mut in_triangle = 0;
+            if !apart {
+                ctx.begin(GL_TRIANGLES).unwrap();
+            }
+            for step in vertices {
+                let is_vertex = matches!(step, Step::Vertex(_) | Step::Eval(_));
+                if apart && is_vertex && in_triangle == 0 {
+                    ctx.begin(GL_TRIANGLES).unwrap();
+                }
+                run(ctx, *step);
+                if is_vertex {
+                    in_triangle = (in_triangle + 1) % 3;
+                    if apart && in_triangle == 0 {
+                        ctx.end().unwrap();
+                    }
+                }
+            }
+            if apart && in_triangle != 0 {
+                ctx.end().unwrap();
+            }
+            if !apart {
+                ctx.end().unwrap();
+            }
+        })
+    };
+    let got = draw(&mut scene(2), &steps, false);
+    let expected = draw(&mut scene(2), &steps, true);
+    assert_eq!(got.len(), expected.len());
+    assert!(
+        got.iter()
+            .zip(&expected)
+            .all(|(a, b)| a.to_bits() == b.to_bits())
+    );
+}
+
+/// The helper thread lights half of each large batch when there is more than one thread:
+/// the feedback is the same to the bit with one thread and with two (and the draw is large
+/// enough for the helper to take part, on any machine, several times).
+#[test]
+fn one_thread_or_two_feed_back_the_same() {
+    let steps = steps(6, 40_000, ALL);
+    let draw = |threads: i32| {
+        fflight::threads::set_threads(threads).unwrap();
+        let values = together(&mut scene(8), &steps);
+        fflight::threads::set_threads(0).unwrap();
+        values
+    };
+    let one = draw(1);
+    let two = draw(2);
+    assert_eq!(one.len(), two.len());
+    assert!(
+        one.iter()
+            .zip(&two)
+            .all(|(a, b)| a.to_bits() == b.to_bits())
+    );
+}
