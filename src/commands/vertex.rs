@@ -456,7 +456,8 @@ impl Context {
             self.stream_in_flight(&mut primitive);
             let pending = &mut primitive.pending;
             let job = pending.job.get_or_insert_with(helper::Job::new);
-            if helper::offer(job, &derived, &mut pending.halves) {
+            let faces = primitive.stream.faces();
+            if helper::offer(job, &derived, faces, &mut pending.halves) {
                 pending.in_flight = true;
                 // The blocks now pending are those of an earlier batch.
                 pending.fresh = 0;
@@ -496,10 +497,11 @@ impl Context {
             halves, outputs, ..
         } = &mut primitive.pending;
         let first = used.min(HALF_BLOCKS);
-        process_blocks(derived, &halves[0][..first], &mut outputs[..first]);
+        let faces = primitive.stream.faces();
+        process_blocks(derived, faces, &halves[0][..first], &mut outputs[..first]);
         if used > HALF_BLOCKS {
             let (_, second) = outputs.split_at_mut(HALF_BLOCKS);
-            process_blocks(derived, &halves[1][..used - HALF_BLOCKS], second);
+            process_blocks(derived, faces, &halves[1][..used - HALF_BLOCKS], second);
         }
         for output in &outputs[..used] {
             self.stream_lit_block(&mut primitive.stream, output);

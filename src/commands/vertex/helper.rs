@@ -19,7 +19,7 @@ use std::sync::{Arc, Condvar, Mutex, MutexGuard, OnceLock};
 use std::time::{Duration, Instant};
 
 use super::{HALF_BLOCKS, HalfBlocks, half_blocks};
-use crate::lighting::batch::process_blocks;
+use crate::lighting::batch::{Faces, process_blocks};
 use crate::pipeline::block::OutputBlock;
 use crate::pipeline::vertex::DerivedState;
 
@@ -40,6 +40,8 @@ enum Phase {
 pub(crate) struct Batch {
     phase: Phase,
     derived: Option<Arc<DerivedState>>,
+    /// The faces whose colors the primitive reads.
+    faces: Faces,
     /// The blocks to light (swapped with the pending blocks', so nothing is copied).
     inputs: [HalfBlocks; 2],
     outputs: Vec<OutputBlock>,
@@ -65,6 +67,7 @@ impl Job {
             batch: Mutex::new(Batch {
                 phase: Phase::Idle,
                 derived: None,
+                faces: Faces::Both,
                 inputs: [half_blocks(), half_blocks()],
                 outputs: vec![OutputBlock::default(); 2 * HALF_BLOCKS],
             }),
@@ -106,12 +109,14 @@ impl Offers {
     }
 }
 
-/// Offers `inputs` (every block full) to the helper thread, to light with `derived`; `inputs`
+/// Offers `inputs` (every block full) to the helper thread, to light with `derived` for the
+/// colors of `faces`; `inputs`
 /// gets the job's previous blocks in exchange (to fill again). `false` when there is no helper
 /// (it could not be started): nothing is offered and `inputs` is unchanged.
 pub(crate) fn offer(
     job: &Arc<Job>,
     derived: &Arc<DerivedState>,
+    faces: Faces,
     inputs: &mut [HalfBlocks; 2],
 ) -> bool {
     let Some(helper) = helper() else {
@@ -121,6 +126,7 @@ pub(crate) fn offer(
         let mut batch = job.lock();
         std::mem::swap(&mut batch.inputs, inputs);
         batch.derived = Some(derived.clone());
+        batch.faces = faces;
         batch.phase = Phase::Offered;
     }
     let mut queue = helper.queue.lock().unwrap_or_else(|e| e.into_inner());
@@ -168,14 +174,15 @@ pub(crate) fn collect<'a>(job: &'a Job, offers: &mut Offers) -> MutexGuard<'a, B
 fn light(batch: &mut Batch) {
     let Batch {
         derived,
+        faces,
         inputs,
         outputs,
         phase,
     } = batch;
     if let Some(derived) = derived {
         let (first, second) = outputs.split_at_mut(HALF_BLOCKS);
-        process_blocks(derived, &inputs[0][..], first);
-        process_blocks(derived, &inputs[1][..], second);
+        process_blocks(derived, *faces, &inputs[0][..], first);
+        process_blocks(derived, *faces, &inputs[1][..], second);
     }
     *phase = Phase::Lit;
 }
