@@ -22,10 +22,42 @@ fn copy_short(to: &mut [f32], values: &[f32]) {
 }
 
 /// The most values a fed-back vertex takes: a GL_4D_COLOR_TEXTURE one.
-const MAX_VERTEX_VALUES: usize = 12;
+pub(crate) const MAX_VERTEX_VALUES: usize = 12;
 
 /// The most values a fed-back point takes: its token and a vertex.
 const MAX_POINT_VALUES: usize = 1 + MAX_VERTEX_VALUES;
+
+/// Writes lane `lane` of a block's `[window, color, tex_coord]` to the start of `out` as a
+/// fed-back vertex of the layout whose flags are `[z, w, color, texture]`; returns how many
+/// values. Inlined with constant flags, it compiles to the layout's moves alone.
+#[inline(always)]
+pub(crate) fn encode_lane(
+    [z, w, with_color, with_texture]: [bool; 4],
+    lane: usize,
+    [window, color, tex_coord]: [&Lanes4; 3],
+    out: &mut [f32; MAX_VERTEX_VALUES],
+) -> usize {
+    let mut k = 0;
+    let mut put = |value: f32| {
+        out[k] = value;
+        k += 1;
+    };
+    put(window[0][lane]);
+    put(window[1][lane]);
+    if z {
+        put(window[2][lane]);
+    }
+    if w {
+        put(window[3][lane]);
+    }
+    if with_color {
+        (0..4).for_each(|c| put(color[c][lane]));
+    }
+    if with_texture {
+        (0..4).for_each(|c| put(tex_coord[c][lane]));
+    }
+    k
+}
 
 /// Lays out the points of a block's `[window, color, tex_coord]` whose lanes are `visible`
 /// as feedback does (GL_POINT_TOKEN, then the values of `FeedbackBuffer::vertex`); returns
@@ -34,34 +66,18 @@ const MAX_POINT_VALUES: usize = 1 + MAX_VERTEX_VALUES;
 #[inline(always)]
 fn encode_points<const Z: bool, const W: bool, const COLOR: bool, const TEXTURE: bool>(
     visible: &[bool; LANES],
-    [window, color, tex_coord]: [&Lanes4; 3],
+    arrays: [&Lanes4; 3],
     out: &mut [f32; LANES * MAX_POINT_VALUES],
 ) -> usize {
-    let per_point = 3 + Z as usize + W as usize + 4 * COLOR as usize + 4 * TEXTURE as usize;
     let mut n = 0;
-    for lane in 0..LANES {
+    for (lane, &visible) in visible.iter().enumerate() {
         let mut point = [GL_POINT_TOKEN as f32; MAX_POINT_VALUES];
-        let mut k = 1;
-        let mut put = |value: f32| {
-            point[k] = value;
-            k += 1;
-        };
-        put(window[0][lane]);
-        put(window[1][lane]);
-        if Z {
-            put(window[2][lane]);
-        }
-        if W {
-            put(window[3][lane]);
-        }
-        if COLOR {
-            (0..4).for_each(|c| put(color[c][lane]));
-        }
-        if TEXTURE {
-            (0..4).for_each(|c| put(tex_coord[c][lane]));
-        }
+        let mut vertex = [0.0; MAX_VERTEX_VALUES];
+        let per_vertex = encode_lane([Z, W, COLOR, TEXTURE], lane, arrays, &mut vertex);
+        point[1..].copy_from_slice(&vertex);
+        let per_point = 1 + per_vertex;
         out[n..n + per_point].copy_from_slice(&point[..per_point]);
-        n += per_point * usize::from(visible[lane]);
+        n += per_point * usize::from(visible);
     }
     n
 }
@@ -83,7 +99,7 @@ pub struct FeedbackLayout {
 
 impl FeedbackLayout {
     /// Writes `vertex`'s values in this layout to the start of `out`; returns how many.
-    fn encode(&self, vertex: &FeedbackVertex, out: &mut [f32]) -> usize {
+    pub(crate) fn encode(&self, vertex: &FeedbackVertex, out: &mut [f32]) -> usize {
         let mut n = 0;
         let mut put = |v: &[f32]| {
             out[n..n + v.len()].copy_from_slice(v);
@@ -280,6 +296,22 @@ impl FeedbackBuffer {
         if fitting.len() < values.len() {
             self.overflowed = true;
         }
+    }
+
+    /// Appends `len` values (at most a triangle's: 2 + 3 * 12) that `write` puts in the slice
+    /// it is given: in place in the application's memory when they fit, else through
+    /// `values_of`, which keeps those that fit and marks the overflow.
+    pub(crate) fn append_with(&mut self, len: usize, write: impl FnOnce(&mut [f32])) {
+        if let FeedbackStorage::Application(memory) = &mut self.storage
+            && self.capacity - self.written >= len
+        {
+            write(&mut memory.as_mut_slice()[self.written..self.written + len]);
+            self.written += len;
+            return;
+        }
+        let mut staged = [0.0; 2 + 3 * MAX_VERTEX_VALUES];
+        write(&mut staged[..len]);
+        self.values_of(&staged[..len]);
     }
 
     /// Appends a token, as a float (§5.3).

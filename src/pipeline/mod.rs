@@ -10,6 +10,7 @@ pub mod capture;
 pub mod clip;
 pub mod feedback;
 pub mod fetch;
+pub mod mesh;
 pub mod parallel;
 pub mod select;
 pub mod units;

@@ -33,6 +33,8 @@ pub struct VertexCache {
     /// The current window's indices, and those of them that missed.
     pending: Vec<usize>,
     misses: Vec<usize>,
+    /// The cache of indexed separate triangles in feedback and selection.
+    pub(crate) mesh: super::mesh::MeshCache,
 }
 
 /// Scratch space: a copy of a context starts with an empty cache.
