@@ -28,6 +28,7 @@ unsafe extern "C" {
     fn glNormalPointer(ty: GLenum, stride: GLsizei, ptr: *const c_void);
     fn glColorPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c_void);
     fn glTexCoordPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c_void);
+    fn fflSetThreads(count: GLint);
 }
 
 const FEEDBACK_TYPES: [GLenum; 5] = [
@@ -420,4 +421,49 @@ fn mesh_path_equals_a_draw_of_the_vertices_in_order() {
             first_difference(&indexed, &in_order)
         );
     }
+}
+
+/// A draw large enough to be split into chunks on several threads gives the one-thread result
+/// bit for bit, whatever the thread count: feedback (clipped, culled, flat, overflowing) and
+/// selection. (The thread count is process-wide; the other tests' results do not depend on it.)
+#[test]
+fn threaded_draws_equal_one_thread() {
+    set_lit_state();
+    // 200 x 170 vertices: about 67,000 triangles, three chunks.
+    let m = mesh(200, 170, 2000);
+    set_arrays(&m);
+    let draw = || draw_elements(&m.indices);
+    let size = m.indices.len() * 40;
+    let configs = configs();
+    for (k, config) in [configs[0], configs[11], configs[13], configs[23]]
+        .into_iter()
+        .enumerate()
+    {
+        apply(config);
+        let kind = FEEDBACK_TYPES[(2 * k + 1) % FEEDBACK_TYPES.len()];
+        let run = |threads: i32| {
+            unsafe { fflSetThreads(threads) };
+            let all = feedback(kind, size, false, &draw);
+            // Overflowing somewhere in the draw (in a chunk after the first for most k).
+            let part = feedback(kind, all.0 as usize * (k + 1) / 5 + 7, false, &draw);
+            (all, part, select(false, &draw))
+        };
+        let one = run(1);
+        assert!(one.0.0 > 0 && one.1.0 == -1, "{config:?}");
+        for threads in [2, 3, 4] {
+            let many = run(threads);
+            assert!(
+                many.0 == one.0,
+                "{config:?} type {kind:#x}, {threads} threads: {}",
+                first_difference(&many.0, &one.0)
+            );
+            assert!(
+                many.1 == one.1,
+                "{config:?} overflow, {threads} threads: {}",
+                first_difference(&many.1, &one.1)
+            );
+            assert_eq!(many.2, one.2, "{config:?} selection, {threads} threads");
+        }
+    }
+    unsafe { fflSetThreads(0) };
 }

@@ -67,7 +67,7 @@ pub enum ElementIndices<'a> {
     },
 }
 
-impl ElementIndices<'_> {
+impl<'a> ElementIndices<'a> {
     /// How many vertices the draw has.
     ///
     /// # Examples
@@ -169,6 +169,35 @@ impl ElementIndices<'_> {
                             .map(|c| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]) as usize),
                     ),
                     _ => None,
+                }
+            }
+        }
+    }
+
+    /// Elements `start..end` of these (clamped to their number).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ElementIndices, gl::*};
+    /// let listed = ElementIndices::Listed { index_type: GL_UNSIGNED_BYTE, bytes: &[2, 0, 1, 5] };
+    /// assert_eq!(listed.slice(1, 3).range(), Some((0, 1)));
+    /// let sequential = ElementIndices::Sequential { first: 10, count: 5 };
+    /// assert_eq!(sequential.slice(3, 9), ElementIndices::Sequential { first: 13, count: 2 });
+    /// ```
+    pub fn slice(&self, start: usize, end: usize) -> ElementIndices<'a> {
+        let end = end.min(self.len());
+        let start = start.min(end);
+        match *self {
+            ElementIndices::Sequential { first, .. } => ElementIndices::Sequential {
+                first: first + start,
+                count: end - start,
+            },
+            ElementIndices::Listed { index_type, bytes } => {
+                let size = index_size(index_type).unwrap_or(1);
+                ElementIndices::Listed {
+                    index_type,
+                    bytes: &bytes[start * size..end * size],
                 }
             }
         }

@@ -25,6 +25,10 @@ use crate::gl::*;
 use crate::lighting::batch::process_blocks;
 use crate::lighting::lanes::LANES;
 use crate::state::raster::ViewportMap;
+use crate::threads::threads_for;
+use std::sync::Mutex;
+
+use super::parallel::{Step, in_order};
 
 /// Slots of the direct-mapped cache: a grid whose rows are shorter than half of this lights
 /// each vertex once.
@@ -38,6 +42,11 @@ const WINDOW_TRIANGLES: usize = 512;
 
 /// Blocks lit at a time: even, so the widest kernel takes them two by two.
 const LIT_BLOCKS: usize = 16;
+
+/// Triangles per chunk of a draw split across threads: a chunk starts with an empty cache,
+/// so a mesh lights the vertices its first row shares with the chunk before again (for rows
+/// of 1000 vertices, one vertex in 16).
+const CHUNK_TRIANGLES: usize = 32 * 1024;
 
 /// The most values a vertex keeps for both faces.
 const MAX_SLOT_VALUES: usize = 2 * MAX_VERTEX_VALUES;
@@ -168,20 +177,160 @@ impl Context {
         }
     }
 
-    /// `draw_mesh` for vertices of `N` feedback values.
+    /// `draw_mesh` for vertices of `N` feedback values: on the calling thread into the
+    /// context's buffer, or, for a large draw, in chunks of `CHUNK_TRIANGLES` on several
+    /// threads, each with a cache of its own, the calling thread writing each chunk's values
+    /// in order (straight into the buffer when it works on the next chunk itself).
     fn draw_mesh_n<const N: usize>(
         &mut self,
         cache: &mut MeshCache,
         draw: &MeshDraw,
         indices: &ElementIndices,
     ) {
-        cache.start_draw(draw);
-        indices.for_each_triangle(|corners| cache.push_triangle::<N>(self, draw, corners));
-        cache.flush::<N>(self, draw);
+        let triangles = indices.len() / 3;
+        let chunks = triangles.div_ceil(CHUNK_TRIANGLES);
+        let threads = threads_for(indices.len()).min(chunks);
+        let chunk =
+            |k: usize| indices.slice(3 * k * CHUNK_TRIANGLES, 3 * (k + 1) * CHUNK_TRIANGLES);
+        if threads <= 1 {
+            return cache.draw::<N>(self, draw, indices);
+        }
+        let helper_caches = Mutex::new(Vec::new());
+        in_order(
+            chunks,
+            threads - 1,
+            ChunkOutput::default,
+            |k, output: &mut ChunkOutput| {
+                let mut cache = helper_caches
+                    .lock()
+                    .unwrap_or_else(|e| e.into_inner())
+                    .pop();
+                let cache = cache.get_or_insert_with(MeshCache::default);
+                cache.draw::<N>(output, draw, &chunk(k));
+                helper_caches
+                    .lock()
+                    .unwrap_or_else(|e| e.into_inner())
+                    .push(std::mem::take(cache));
+            },
+            |step| match step {
+                Step::Run(k) => cache.draw::<N>(self, draw, &chunk(k)),
+                Step::Take(output) => output.send_to(self, &draw.planes, &mut cache.polygon),
+            },
+        );
+    }
+}
+
+/// Where the triangles of a mesh draw go: the context (its feedback buffer or selection, and
+/// the general path for the clipped ones), or a chunk's output, which the context takes later.
+trait TriangleSink {
+    /// A triangle's `len` feedback values, which `write` puts in the slice it is given.
+    fn triangle(&mut self, len: usize, write: impl FnOnce(&mut [f32]));
+    /// A selection hit at window depth `z`.
+    fn hit(&mut self, z: f32);
+    /// A triangle that crosses a plane, for the general clipper.
+    fn clipped(
+        &mut self,
+        planes: &ClipPlanes,
+        corners: [&ProcessedVertex; 3],
+        polygon: &mut Vec<PolygonVertex>,
+    );
+}
+
+impl TriangleSink for Context {
+    fn triangle(&mut self, len: usize, write: impl FnOnce(&mut [f32])) {
+        self.feedback.append_with(len, write);
+    }
+
+    fn hit(&mut self, z: f32) {
+        self.selection.hit(z);
+    }
+
+    fn clipped(
+        &mut self,
+        planes: &ClipPlanes,
+        corners: [&ProcessedVertex; 3],
+        polygon: &mut Vec<PolygonVertex>,
+    ) {
+        if clip_triangle(planes, corners, [true; 3], polygon) {
+            self.feedback_polygon(polygon, corners[2]);
+        } else {
+            self.feedback_triangle(corners, [true; 3], corners[2], true);
+        }
+    }
+}
+
+/// What a chunk of a mesh draw made on a helper thread, for the context to take in order.
+#[derive(Default)]
+struct ChunkOutput {
+    values: Vec<f32>,
+    /// The clipped triangles, each with how many of `values` come before it.
+    clipped: Vec<(usize, [ProcessedVertex; 3])>,
+    /// The smallest and largest depth of its selection hits.
+    hits: Option<(f32, f32)>,
+}
+
+impl TriangleSink for ChunkOutput {
+    fn triangle(&mut self, len: usize, write: impl FnOnce(&mut [f32])) {
+        let at = self.values.len();
+        self.values.resize(at + len, 0.0);
+        write(&mut self.values[at..]);
+    }
+
+    fn hit(&mut self, z: f32) {
+        let (min, max) = self.hits.get_or_insert((z, z));
+        *min = min.min(z);
+        *max = max.max(z);
+    }
+
+    fn clipped(
+        &mut self,
+        _planes: &ClipPlanes,
+        corners: [&ProcessedVertex; 3],
+        _polygon: &mut Vec<PolygonVertex>,
+    ) {
+        self.clipped
+            .push((self.values.len(), [*corners[0], *corners[1], *corners[2]]));
+    }
+}
+
+impl ChunkOutput {
+    /// Sends the chunk to the context, as if its triangles came one by one, and empties it.
+    fn send_to(
+        &mut self,
+        ctx: &mut Context,
+        planes: &ClipPlanes,
+        polygon: &mut Vec<PolygonVertex>,
+    ) {
+        let mut sent = 0;
+        for (at, [a, b, c]) in &self.clipped {
+            ctx.feedback.values_of(&self.values[sent..*at]);
+            sent = *at;
+            ctx.clipped(planes, [a, b, c], polygon);
+        }
+        ctx.feedback.values_of(&self.values[sent..]);
+        // Selection keeps only the extreme depths of the hits: their order does not matter.
+        if let Some((min, max)) = self.hits.take() {
+            ctx.selection.hit(min);
+            ctx.selection.hit(max);
+        }
+        self.values.clear();
+        self.clipped.clear();
     }
 }
 
 impl MeshCache {
+    /// Sends the separate triangles of `indices` to `sink`, in order.
+    fn draw<const N: usize>(
+        &mut self,
+        sink: &mut impl TriangleSink,
+        draw: &MeshDraw,
+        indices: &ElementIndices,
+    ) {
+        self.start_draw(draw);
+        indices.for_each_triangle(|corners| self.push_triangle::<N>(sink, draw, corners));
+        self.flush::<N>(sink, draw);
+    }
+
     fn start_draw(&mut self, draw: &MeshDraw) {
         if self.tags.is_empty() {
             let slots = SLOTS + SPARE_SLOTS;
@@ -209,12 +358,12 @@ impl MeshCache {
     /// a corner's slot still holds a vertex the window needs.
     fn push_triangle<const N: usize>(
         &mut self,
-        ctx: &mut Context,
+        sink: &mut impl TriangleSink,
         draw: &MeshDraw,
         corners: [usize; 3],
     ) {
         if self.triangles.len() == WINDOW_TRIANGLES {
-            self.flush::<N>(ctx, draw);
+            self.flush::<N>(sink, draw);
         }
         'retry: loop {
             let mut slots = [0; 3];
@@ -225,7 +374,7 @@ impl MeshCache {
                 if tag.index != index {
                     if tag.window == self.window {
                         if !self.triangles.is_empty() {
-                            self.flush::<N>(ctx, draw);
+                            self.flush::<N>(sink, draw);
                             continue 'retry;
                         }
                         // Two corners of this triangle share a slot: a spare one, used once.
@@ -242,16 +391,16 @@ impl MeshCache {
             }
             self.triangles.push(slots);
             if spare {
-                self.flush::<N>(ctx, draw);
+                self.flush::<N>(sink, draw);
             }
             return;
         }
     }
 
     /// Lights the window's new vertices, then sends its triangles on, in order.
-    fn flush<const N: usize>(&mut self, ctx: &mut Context, draw: &MeshDraw) {
+    fn flush<const N: usize>(&mut self, sink: &mut impl TriangleSink, draw: &MeshDraw) {
         self.light_misses::<N>(draw);
-        self.send_triangles::<N>(ctx, draw);
+        self.send_triangles::<N>(sink, draw);
         self.triangles.clear();
         self.miss_indices.clear();
         self.miss_slots.clear();
@@ -281,7 +430,7 @@ impl MeshCache {
 
     /// The window's triangles: trivially rejected, clipped by the general path, or faced,
     /// culled and fed back or selected here.
-    fn send_triangles<const N: usize>(&mut self, ctx: &mut Context, draw: &MeshDraw) {
+    fn send_triangles<const N: usize>(&mut self, sink: &mut impl TriangleSink, draw: &MeshDraw) {
         for &triangle in &self.triangles {
             let [a, b, c] = triangle.map(|slot| slot as usize);
             let Slots {
@@ -292,12 +441,11 @@ impl MeshCache {
             let masks = [masks[a], masks[b], masks[c]];
             if masks[0] | masks[1] | masks[2] != 0 {
                 if masks[0] & masks[1] & masks[2] == 0 {
-                    let corners = [&vertices[a], &vertices[b], &vertices[c]];
-                    if clip_triangle(&draw.planes, corners, [true; 3], &mut self.polygon) {
-                        ctx.feedback_polygon(&self.polygon, corners[2]);
-                    } else {
-                        ctx.feedback_triangle(corners, [true; 3], corners[2], true);
-                    }
+                    sink.clipped(
+                        &draw.planes,
+                        [&vertices[a], &vertices[b], &vertices[c]],
+                        &mut self.polygon,
+                    );
                 }
                 continue;
             }
@@ -323,12 +471,12 @@ impl MeshCache {
             }
             if draw.layout.is_none() {
                 for v in [va, vb, vc] {
-                    ctx.selection.hit(v[2]);
+                    sink.hit(v[2]);
                 }
                 continue;
             }
             let face = if front { 0 } else { N };
-            ctx.feedback.append_with(2 + 3 * N, |out| {
+            sink.triangle(2 + 3 * N, |out| {
                 out[0] = GL_POLYGON_TOKEN as f32;
                 out[1] = 3.0;
                 for (k, v) in [va, vb, vc].into_iter().enumerate() {
