@@ -7,7 +7,7 @@
 
 use fflight::Context;
 use fflight::gl::*;
-use fflight::lighting::batch::{process_blocks, process_blocks_exact};
+use fflight::lighting::batch::{Faces, process_blocks, process_blocks_exact};
 use fflight::lighting::fast::{InstructionSet, kernel_blocks_on};
 use fflight::lighting::lanes::LANES;
 use fflight::pipeline::block::{InputBlock, OutputBlock};
@@ -274,7 +274,7 @@ fn non_finite_inputs_give_clamped_colors() {
             input.push(position, &attribs);
         }
         let mut output = [OutputBlock::default()];
-        process_blocks(&derived, &[input], &mut output);
+        process_blocks(&derived, Faces::Both, &[input], &mut output);
         for lane in 0..LANES {
             let v = output[0].vertex(lane);
             for c in [v.colors.front, v.colors.back] {
@@ -318,7 +318,7 @@ fn bulk_results_do_not_depend_on_the_thread_count() {
             ..*attribs
         };
         let want = derived.process(*position, &attribs);
-        let (color, position) = largest_difference(&results[0][i], &want);
+        let (color, position) = largest_difference(&results[0][i], &want, Faces::Both);
         assert!(color <= 1e-5 && position <= 1e-5, "vertex {i}");
     }
 }
@@ -476,12 +476,14 @@ fn draws_do_not_depend_on_the_thread_count() {
     }
 }
 
-/// The largest difference between two vertices' values: colors absolutely, positions and
-/// texture coordinates relative to their magnitude (at least 1).
-fn largest_difference(a: &ProcessedVertex, b: &ProcessedVertex) -> (f32, f32) {
+/// The largest difference between two vertices' values: the colors of `faces` absolutely,
+/// positions and texture coordinates relative to their magnitude (at least 1).
+fn largest_difference(a: &ProcessedVertex, b: &ProcessedVertex, faces: Faces) -> (f32, f32) {
+    let face_count = if faces == Faces::Both { 2 } else { 1 };
     let colors = |v: &ProcessedVertex| {
         [v.colors.front, v.colors.back]
             .into_iter()
+            .take(face_count)
             .flat_map(|c| {
                 c.primary
                     .to_array()
@@ -530,7 +532,8 @@ fn random_fast_state(rng: &mut Rng, state: usize) -> Context {
 
 /// The fast engine (`process_blocks`: single precision where its error bound holds, the
 /// scalar double-precision path for the lanes it refuses) within 1e-5 of the scalar path on
-/// random states, exponents up to 128 included; and the kernel serving most lanes.
+/// random states, exponents up to 128 included, for both faces and for the front face alone
+/// (two-sided lighting run one-sided); and the kernel serving most lanes.
 #[test]
 fn fast_engine_is_within_1e5_of_the_scalar_path() {
     let mut rng = Rng(4242);
@@ -541,18 +544,23 @@ fn fast_engine_is_within_1e5_of_the_scalar_path() {
         let mut ctx = random_fast_state(&mut rng, state);
         let derived = ctx.derived().clone();
         let (inputs, expected) = random_blocks::<4>(&mut rng, &derived);
+        let faces = if state % 2 == 0 {
+            Faces::Both
+        } else {
+            Faces::Front
+        };
         let mut outputs = [OutputBlock::default(); 4];
-        process_blocks(&derived, &inputs, &mut outputs);
+        process_blocks(&derived, faces, &inputs, &mut outputs);
         let got = outputs
             .iter()
             .flat_map(|o| (0..o.len).map(|lane| o.vertex(lane)));
         for (k, (got, want)) in got.zip(&expected).enumerate() {
-            let (color, position) = largest_difference(&got, want);
+            let (color, position) = largest_difference(&got, want, faces);
             // Colors within 1e-5; eye, clip and texture coordinates exact (the fast engine
             // transforms in double precision, in the scalar path's order).
             assert!(
                 color <= 1e-5 && position == 0.0,
-                "state {state}, vertex {k}: colors {color:e}, positions {position:e}\n{got:?}\n{want:?}"
+                "state {state}, {faces:?}, vertex {k}: colors {color:e}, positions {position:e}\n{got:?}\n{want:?}"
             );
             assert_eq!(got.edge_flag, want.edge_flag);
             worst_color = worst_color.max(color);
@@ -563,6 +571,7 @@ fn fast_engine_is_within_1e5_of_the_scalar_path() {
             if kernel_blocks_on(
                 InstructionSet::Avx2,
                 fast,
+                faces,
                 &inputs,
                 &mut outputs,
                 &mut refused,
@@ -600,13 +609,18 @@ fn every_instruction_set_agrees_with_the_scalar_path() {
             continue;
         };
         let (inputs, expected) = random_blocks::<3>(&mut rng, &derived);
+        let faces = if state % 3 == 0 {
+            Faces::Front
+        } else {
+            Faces::Both
+        };
         for (k, set) in [InstructionSet::Avx2, InstructionSet::Avx512]
             .into_iter()
             .enumerate()
         {
             let mut outputs = [OutputBlock::default(); 3];
             let mut refused = [0u8; 3];
-            if !kernel_blocks_on(set, &fast, &inputs, &mut outputs, &mut refused) {
+            if !kernel_blocks_on(set, &fast, faces, &inputs, &mut outputs, &mut refused) {
                 continue;
             }
             let mut want = expected.iter();
@@ -616,7 +630,7 @@ fn every_instruction_set_agrees_with_the_scalar_path() {
                     if refused[b] & 1 << lane != 0 || derived.transform.tex_gen.is_some() {
                         continue;
                     }
-                    let (color, position) = largest_difference(&output.vertex(lane), want);
+                    let (color, position) = largest_difference(&output.vertex(lane), want, faces);
                     assert!(
                         color <= 1e-5 && position == 0.0,
                         "{set:?} state {state} block {b} lane {lane}: {color:e} {position:e}"
@@ -628,7 +642,14 @@ fn every_instruction_set_agrees_with_the_scalar_path() {
             // the second in sixteen lanes, alone in eight).
             let mut alone = [OutputBlock::default()];
             let mut alone_refused = [0u8];
-            kernel_blocks_on(set, &fast, &inputs[..1], &mut alone, &mut alone_refused);
+            kernel_blocks_on(
+                set,
+                &fast,
+                faces,
+                &inputs[..1],
+                &mut alone,
+                &mut alone_refused,
+            );
             assert_eq!(alone_refused[0], refused[0], "{set:?} state {state}");
             assert_eq!(alone[0], outputs[0], "{set:?} state {state}");
         }

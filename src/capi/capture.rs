@@ -3,12 +3,13 @@
 //! fflCaptureReadTexCoords (every texture unit's coordinates) and the bulk
 //! lighting call fflLightVertices (see `commands::capture` and `pipeline::capture`).
 
-use glam::{Vec3, Vec4};
+use glam::Vec4;
 
 use super::with_context;
 use crate::commands::capture::BulkLayout;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
+use crate::lighting::batch::Faces;
 use crate::pipeline::block::OutputBlock;
 use crate::pipeline::capture::CapturedPrimitive;
 use crate::pipeline::vertex::ProcessedVertex;
@@ -301,17 +302,25 @@ pub unsafe extern "C" fn fflLightVertices(
             ],
             layouts: layout.outputs,
         };
+        // Without a back output, two-sided lighting need not light the back face.
+        let faces = if back_primary.is_null() && back_secondary.is_null() {
+            Faces::Front
+        } else {
+            Faces::Both
+        };
         ctx.light_blocks(
             count,
+            faces,
             |first, block| {
                 for (lane, i) in (first..first + block.len).enumerate() {
-                    block.set_position(lane, Vec4::from_array(layout.positions.read(positions, i)));
+                    layout
+                        .positions
+                        .read_lane(positions, i, &mut block.position, lane);
                     if let Some(n) = normals {
-                        let n = layout.normals.read(n, i);
-                        block.set_normal(lane, Vec3::new(n[0], n[1], n[2]));
+                        layout.normals.read_lane(n, i, &mut block.normal, lane);
                     }
                     if let Some(c) = colors {
-                        block.set_color(lane, Vec4::from_array(layout.colors.read(c, i)));
+                        layout.colors.read_lane(c, i, &mut block.color, lane);
                     }
                 }
             },

@@ -1175,7 +1175,8 @@ impl Context {
                     fetch.fill(input, &indices[..LANES.min(first + count - start)]);
                 };
                 let blocks = count.div_ceil(LANES);
-                light_in_order(&derived, &input, blocks, threads - 1, fill, |lit| {
+                let faces = stream.faces();
+                light_in_order(&derived, faces, &input, blocks, threads - 1, fill, |lit| {
                     self.stream_lit_block(&mut stream, lit)
                 });
                 return self.end_stream(stream);
@@ -1212,7 +1213,7 @@ impl Context {
         let mut input = InputBlock::with_attribs(&self.current);
         let mut stream = self.begin_stream(mode);
         let mut cache = std::mem::take(&mut self.vertex_cache);
-        cache.start_draw();
+        cache.start_draw(stream.faces());
         indices.for_each(|index| {
             cache.push(index, (&derived, fetch, &mut input), |v| {
                 self.stream_vertex(&mut stream, v)

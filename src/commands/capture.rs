@@ -6,13 +6,11 @@ use glam::{Vec3, Vec4};
 
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
-use crate::gl::*;
-use crate::lighting::batch::process_blocks;
-use crate::lighting::lanes::LANES;
+use crate::lighting::batch::{Faces, process_blocks};
+use crate::lighting::lanes::{LANES, LanesF32};
 use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::pipeline::capture::Capture;
 use crate::pipeline::vertex::{CurrentAttribs, ProcessedVertex};
-use crate::state::arrays::read_components;
 use crate::threads::threads_for;
 
 /// The layout of one strided array of floats of a bulk call: element i starts `i * stride`
@@ -78,26 +76,30 @@ impl FloatLayout {
         i * self.stride
     }
 
-    /// Element `i` of `bytes`, padded with (0, 0, 0, 1).
+    /// Element `i` of `bytes` into lane `lane` of the components `lanes`, padded with
+    /// (0, 0, 0, 1); components past the element's and the lanes' count are left out.
     ///
     /// # Examples
     ///
     /// ```
     /// use fflight::commands::capture::FloatLayout;
     /// let bytes: Vec<u8> = [1.0f32, 2.0].iter().flat_map(|v| v.to_ne_bytes()).collect();
-    /// assert_eq!(FloatLayout::new(2, 0)?.read(&bytes, 0), [1.0, 2.0, 0.0, 1.0]);
+    /// let mut lanes = [[9.0; 8]; 4];
+    /// FloatLayout::new(2, 0)?.read_lane(&bytes, 0, &mut lanes, 5);
+    /// assert_eq!(lanes.map(|c| c[5]), [1.0, 2.0, 0.0, 1.0]);
     /// # Ok::<(), fflight::GlError>(())
     /// ```
-    pub fn read(&self, bytes: &[u8], i: usize) -> [f32; 4] {
-        let mut out = [0.0, 0.0, 0.0, 1.0];
-        let offset = self.offset(i);
-        read_components(
-            &bytes[offset..offset + 4 * self.size],
-            GL_FLOAT,
-            false,
-            &mut out[..self.size],
-        );
-        out
+    pub fn read_lane(&self, bytes: &[u8], i: usize, lanes: &mut [LanesF32], lane: usize) {
+        // Straight into the lanes, a component at a time: gathered into an array first, the
+        // element would be stored in pieces and loaded whole, which stalls.
+        let element = &bytes[self.offset(i)..][..4 * self.size];
+        for (c, component) in lanes.iter_mut().enumerate() {
+            component[lane] = match element.get(4 * c..4 * c + 4) {
+                Some(value) => f32::from_ne_bytes(value.try_into().expect("4 bytes")),
+                None if c == 3 => 1.0,
+                None => 0.0,
+            };
+        }
     }
 }
 
@@ -223,7 +225,7 @@ impl Context {
                 };
                 input[0].push(position, &attribs);
             }
-            process_blocks(&derived, &input, &mut output);
+            process_blocks(&derived, Faces::Both, &input, &mut output);
             for lane in 0..output[0].len {
                 lit(first + lane, &output[0].vertex(lane));
             }
@@ -235,7 +237,8 @@ impl Context {
     /// (`threads::thread_count`): `fill(first, block)` puts vertices `first..first +
     /// block.len` into the block's lanes (the lanes hold the current attributes, and what
     /// `fill` puts there stays until it puts something else),
-    /// `emit(first, block)` receives them lit. Blocks are independent, so the results do not
+    /// `emit(first, block)` receives them lit (the colors of `faces`). Blocks are
+    /// independent, so the results do not
     /// depend on the thread count; `emit` is called from the threads, each block once.
     /// GL_INVALID_OPERATION between glBegin and glEnd.
     ///
@@ -248,6 +251,7 @@ impl Context {
     /// let lit = Mutex::new(vec![0.0f32; 20]);
     /// ctx.light_blocks(
     ///     20,
+    ///     fflight::lighting::batch::Faces::Both,
     ///     |first, block| {
     ///         for lane in 0..block.len {
     ///             let x = (first + lane) as f32;
@@ -267,6 +271,7 @@ impl Context {
     pub fn light_blocks(
         &mut self,
         count: usize,
+        faces: Faces,
         fill: impl Fn(usize, &mut InputBlock) + Sync,
         emit: impl Fn(usize, &OutputBlock) + Sync,
     ) -> GlResult {
@@ -283,7 +288,12 @@ impl Context {
                     input.len = LANES.min(count - first);
                     fill(first, input);
                 }
-                process_blocks(&derived, &inputs[..chunk_len], &mut outputs[..chunk_len]);
+                process_blocks(
+                    &derived,
+                    faces,
+                    &inputs[..chunk_len],
+                    &mut outputs[..chunk_len],
+                );
                 for (k, output) in outputs[..chunk_len].iter().enumerate() {
                     emit((chunk + k) * LANES, output);
                 }
@@ -341,6 +351,7 @@ impl Context {
         let out = OutputSlots(std::sync::Mutex::new(out));
         self.light_blocks(
             count,
+            Faces::Both,
             |first, block| {
                 for (lane, i) in (first..first + block.len).enumerate() {
                     block.set_position(lane, positions[i]);

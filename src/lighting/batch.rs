@@ -24,15 +24,27 @@ use crate::pipeline::block::{InputBlock, Lanes4, OutputBlock};
 use crate::pipeline::vertex::{DerivedState, VertexTransform};
 use crate::state::material::MaterialMask;
 
+/// Which faces' colors the consumer of processed vertices reads.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Faces {
+    /// Front and back: polygons (their facing picks the colors), and capture.
+    #[default]
+    Both,
+    /// Front only: points and lines always take the front colors (§2.14.1), as the raster
+    /// position does (§2.13); two-sided lighting need not light their back face. The back
+    /// colors are then unspecified.
+    Front,
+}
+
 /// Processes `inputs` into `outputs` (pairwise; the shorter decides) with the state `derived`:
-/// transformation (§2.11) and lighting (§2.14.1) of every lane. Against
+/// transformation (§2.11) and lighting (§2.14.1) of every lane, for the colors of `faces`. Against
 /// `DerivedState::process` vertex by vertex: eye, clip and texture coordinates the same to the
 /// last bit, colors within 1e-5 (the fast kernel's bound is 5e-6).
 ///
 /// # Examples
 ///
 /// ```
-/// use fflight::lighting::{PreparedLighting, batch::process_blocks};
+/// use fflight::lighting::{PreparedLighting, batch::{Faces, process_blocks}};
 /// use fflight::pipeline::block::{InputBlock, OutputBlock};
 /// use fflight::pipeline::vertex::{CurrentAttribs, DerivedState, VertexTransform};
 /// use fflight::state::{light::Light, light_model::LightModel};
@@ -61,24 +73,29 @@ use crate::state::material::MaterialMask;
 /// let mut input = InputBlock::with_attribs(&attribs);
 /// input.push(Vec4::new(1.0, 2.0, 3.0, 1.0), &attribs);
 /// let mut outputs = [OutputBlock::default()];
-/// process_blocks(&derived, &[input], &mut outputs);
+/// process_blocks(&derived, Faces::Both, &[input], &mut outputs);
 /// let (lit, scalar) = (outputs[0].vertex(0), derived.process(Vec4::new(1.0, 2.0, 3.0, 1.0), &attribs));
 /// assert_eq!((lit.eye, lit.clip), (scalar.eye, scalar.clip));
 /// assert!((lit.colors.front.primary - scalar.colors.front.primary).abs().max_element() <= 1e-5);
 /// assert_eq!(scalar.eye, Vec4::new(1.0, 2.0, -2.0, 1.0));
 /// ```
-pub fn process_blocks(derived: &DerivedState, inputs: &[InputBlock], outputs: &mut [OutputBlock]) {
+pub fn process_blocks(
+    derived: &DerivedState,
+    faces: Faces,
+    inputs: &[InputBlock],
+    outputs: &mut [OutputBlock],
+) {
     let served = derived
         .fast
         .as_ref()
-        .is_some_and(|fast| super::fast::process_blocks(fast, derived, inputs, outputs));
+        .is_some_and(|fast| super::fast::process_blocks(fast, derived, faces, inputs, outputs));
     if !served {
         process_blocks_exact(derived, inputs, outputs);
     }
 }
 
 /// One vertex through the engine `process_blocks` runs, so that a lone vertex (the raster
-/// position) is lit exactly as the same vertex among others.
+/// position) is lit exactly as the same vertex among other points: the front colors.
 ///
 /// # Examples
 ///
@@ -99,7 +116,12 @@ pub fn process_vertex(
     let mut input = InputBlock::with_attribs(attribs);
     input.push(object, attribs);
     let mut output = [OutputBlock::default()];
-    process_blocks(derived, std::slice::from_ref(&input), &mut output);
+    process_blocks(
+        derived,
+        Faces::Front,
+        std::slice::from_ref(&input),
+        &mut output,
+    );
     output[0].vertex(0)
 }
 

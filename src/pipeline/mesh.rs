@@ -22,7 +22,7 @@ use super::vertex::{DerivedState, ProcessedVertex};
 use crate::commands::arrays::ElementIndices;
 use crate::context::{Context, RenderMode};
 use crate::gl::*;
-use crate::lighting::batch::process_blocks;
+use crate::lighting::batch::{Faces, process_blocks};
 use crate::lighting::lanes::LANES;
 use crate::state::raster::ViewportMap;
 use crate::threads::threads_for;
@@ -418,6 +418,7 @@ impl MeshCache {
             }
             process_blocks(
                 draw.derived,
+                Faces::Both,
                 &self.inputs[..blocks],
                 &mut self.outputs[..blocks],
             );

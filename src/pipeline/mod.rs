@@ -22,7 +22,7 @@ use glam::Vec4;
 use crate::context::{Context, RenderMode};
 use crate::gl::*;
 use crate::lighting::FaceColors;
-use crate::lighting::batch::process_blocks;
+use crate::lighting::batch::{Faces, process_blocks};
 use crate::lighting::lanes::LANES;
 use assembly::{Assembler, Primitive};
 use block::{InputBlock, OutputBlock, lanes4_get};
@@ -95,6 +95,22 @@ pub struct DrawStream {
     polygon: Vec<PolygonVertex>,
 }
 
+impl DrawStream {
+    /// The faces whose colors the draw reads: points and lines only the front ones, unless
+    /// capture records both.
+    pub(crate) fn faces(&self) -> Faces {
+        let lines_or_points = matches!(
+            self.assembler.mode(),
+            GL_POINTS | GL_LINES | GL_LINE_STRIP | GL_LINE_LOOP
+        );
+        if lines_or_points && self.capture.is_none() {
+            Faces::Front
+        } else {
+            Faces::Both
+        }
+    }
+}
+
 /// How many blocks `Context::stream_blocks` takes at a time: two, so that the fast engine's
 /// widest kernel (two blocks in sixteen lanes) serves immediate mode too.
 pub(crate) const STREAMED_BLOCKS: usize = 2;
@@ -151,7 +167,7 @@ impl Context {
     ) {
         let mut outputs = self.lit_blocks.take().unwrap_or_default();
         let outputs_used = &mut outputs[..inputs.len()];
-        process_blocks(derived, inputs, outputs_used);
+        process_blocks(derived, stream.faces(), inputs, outputs_used);
         for output in outputs_used.iter() {
             self.stream_lit_block(stream, output);
         }

@@ -13,7 +13,7 @@ use std::sync::{Condvar, Mutex};
 
 use super::block::{InputBlock, OutputBlock};
 use super::vertex::DerivedState;
-use crate::lighting::batch::process_blocks;
+use crate::lighting::batch::{Faces, process_blocks};
 
 /// Blocks per chunk: the unit of work (2048 vertices, about 230 KiB of lit blocks; large
 /// enough that handing chunks over costs little next to lighting them).
@@ -69,8 +69,8 @@ impl<C> Drop for CloseOnDrop<'_, C> {
     }
 }
 
-/// Lights `blocks` blocks with `helpers` helper threads besides the calling thread and gives
-/// them to `stream` in order on the calling thread. `fill(block, input)` puts block `block`'s
+/// Lights `blocks` blocks (the colors of `faces`) with `helpers` helper threads besides the
+/// calling thread and gives them to `stream` in order on the calling thread. `fill(block, input)` puts block `block`'s
 /// vertices into `input` (which starts as `template`, and keeps what `fill` leaves there).
 ///
 /// # Examples
@@ -97,6 +97,7 @@ impl<C> Drop for CloseOnDrop<'_, C> {
 /// let mut xs = Vec::new();
 /// light_in_order(
 ///     &derived,
+///     fflight::lighting::batch::Faces::Both,
 ///     &InputBlock::default(),
 ///     100,
 ///     1,
@@ -111,6 +112,7 @@ impl<C> Drop for CloseOnDrop<'_, C> {
 /// ```
 pub fn light_in_order(
     derived: &DerivedState,
+    faces: Faces,
     template: &InputBlock,
     blocks: usize,
     helpers: usize,
@@ -141,7 +143,7 @@ pub fn light_in_order(
             fill(first + k, input);
         }
         outputs.truncate(len);
-        process_blocks(derived, &inputs[..len], &mut outputs);
+        process_blocks(derived, faces, &inputs[..len], &mut outputs);
         Ok((chunk, outputs))
     };
     std::thread::scope(|scope| {

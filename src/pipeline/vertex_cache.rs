@@ -6,7 +6,7 @@
 use super::block::{InputBlock, OutputBlock};
 use super::fetch::ArrayFetch;
 use super::vertex::{DerivedState, ProcessedVertex};
-use crate::lighting::batch::process_blocks;
+use crate::lighting::batch::{Faces, process_blocks};
 use crate::lighting::lanes::LANES;
 
 /// Slots in the cache: a mesh whose rows are shorter than half of this reuses every vertex.
@@ -35,6 +35,8 @@ pub struct VertexCache {
     misses: Vec<usize>,
     /// The cache of indexed separate triangles in feedback and selection.
     pub(crate) mesh: super::mesh::MeshCache,
+    /// The faces whose colors the draw reads.
+    faces: Faces,
 }
 
 /// Scratch space: a copy of a context starts with an empty cache.
@@ -45,17 +47,19 @@ impl Clone for VertexCache {
 }
 
 impl VertexCache {
-    /// Empties the cache for a new draw.
+    /// Empties the cache for a new draw that reads the colors of `faces`.
     ///
     /// # Examples
     ///
     /// ```
+    /// use fflight::lighting::batch::Faces;
     /// use fflight::pipeline::vertex_cache::VertexCache;
     /// let mut cache = VertexCache::default();
-    /// cache.start_draw(); // allocates the slots once, then only marks them empty
-    /// cache.start_draw();
+    /// cache.start_draw(Faces::Both); // allocates the slots once, then only marks them empty
+    /// cache.start_draw(Faces::Front);
     /// ```
-    pub fn start_draw(&mut self) {
+    pub fn start_draw(&mut self, faces: Faces) {
+        self.faces = faces;
         if self.slots.is_empty() {
             self.slots = vec![
                 Slot {
@@ -118,7 +122,7 @@ impl VertexCache {
     /// let fetch = ArrayFetch::new(0, arrays);
     /// let mut input = InputBlock::default();
     /// let mut cache = VertexCache::default();
-    /// cache.start_draw();
+    /// cache.start_draw(fflight::lighting::batch::Faces::Both);
     /// let mut xs = Vec::new();
     /// for index in [0, 2, 0] {
     ///     cache.push(index, (&derived, &fetch, &mut input), |v| xs.push(v.clip.x));
@@ -193,7 +197,7 @@ impl VertexCache {
     /// let fetch = ArrayFetch::new(0, arrays);
     /// let mut input = InputBlock::default();
     /// let mut cache = VertexCache::default();
-    /// cache.start_draw();
+    /// cache.start_draw(fflight::lighting::batch::Faces::Both);
     /// cache.push(1, (&derived, &fetch, &mut input), |_| {});
     /// let mut sent = Vec::new();
     /// cache.flush(&derived, &fetch, &mut input, |v| sent.push(v.clip.y));
@@ -209,7 +213,12 @@ impl VertexCache {
         let mut output = [OutputBlock::default()];
         for block in self.misses.chunks(LANES) {
             fetch.fill(input, block);
-            process_blocks(derived, std::slice::from_ref(input), &mut output);
+            process_blocks(
+                derived,
+                self.faces,
+                std::slice::from_ref(input),
+                &mut output,
+            );
             for (lane, &index) in block.iter().enumerate() {
                 self.slots[index % SLOTS].vertex = output[0].vertex(lane);
             }

@@ -10,6 +10,7 @@ use crate::lighting::fast::{
     DISCONTINUITY, DOT_ERROR, ERROR_BUDGET, FastFace, FastLight, FastState, ILL_CONDITIONED,
     SHORTEST_HALF_SQUARED,
 };
+use crate::lighting::batch::Faces;
 use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::state::material::MaterialMask;
 
@@ -132,16 +133,19 @@ type Outputs<'a> = [&'a mut OutputBlock; BLOCKS];
 
 with_features! {
 /// Every block of `inputs` into `outputs` (pairwise), `BLOCKS` at a time (a count of blocks
-/// `BLOCKS` divides): each block's refused lanes (one bit each, whose outputs the caller
-/// replaces) at its index in `refused`.
+/// `BLOCKS` divides), for the colors of `faces`: each block's refused lanes (one bit each,
+/// whose outputs the caller replaces) at its index in `refused`. For the front face alone,
+/// two-sided lighting runs as one-sided: the front colors are the same.
 pub(super) fn process_blocks(
     state: &FastState,
+    faces: Faces,
     inputs: &[InputBlock],
     outputs: &mut [OutputBlock],
     refused: &mut [u8],
 ) {
     let count = inputs.len().min(outputs.len()).min(refused.len());
     debug_assert!(count.is_multiple_of(BLOCKS));
+    let two_side = state.two_side && faces == Faces::Both;
     let groups = inputs[..count]
         .chunks_exact(BLOCKS)
         .zip(outputs[..count].chunks_exact_mut(BLOCKS))
@@ -150,7 +154,7 @@ pub(super) fn process_blocks(
         let ins: Inputs = std::array::from_fn(|k| &ins[k]);
         let mut outs = outs.iter_mut();
         let outs: Outputs = std::array::from_fn(|_| outs.next().expect("BLOCKS outputs"));
-        let bits = match (state.lit, state.two_side, state.local_viewer) {
+        let bits = match (state.lit, two_side, state.local_viewer) {
             (false, _, _) => group_of::<false, false, false>(state, ins, outs),
             (true, false, false) => group_of::<true, false, false>(state, ins, outs),
             (true, false, true) => group_of::<true, false, true>(state, ins, outs),
