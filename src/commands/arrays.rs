@@ -20,6 +20,7 @@ use crate::commands::buffers::with_stores;
 use crate::context::Context;
 use crate::error::{GlError, GlResult, try_copy};
 use crate::gl::*;
+use crate::lighting::batch::Faces;
 use crate::lighting::lanes::LANES;
 use crate::pipeline::block::InputBlock;
 use crate::pipeline::fetch::ArrayFetch;
@@ -1168,6 +1169,13 @@ impl Context {
         let mut stream = self.begin_stream(mode);
         if let ElementIndices::Sequential { first, count } = *indices {
             let threads = threads_for(count);
+            if threads > 1
+                && mode == GL_POINTS
+                && stream.faces() == Faces::Front
+                && self.draw_points_on_threads(&derived, fetch, &input, (first, count), threads)
+            {
+                return self.end_stream(stream);
+            }
             if threads > 1 {
                 let fill = |block: usize, input: &mut InputBlock| {
                     let start = first + block * LANES;

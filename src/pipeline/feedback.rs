@@ -25,7 +25,7 @@ fn copy_short(to: &mut [f32], values: &[f32]) {
 pub(crate) const MAX_VERTEX_VALUES: usize = 12;
 
 /// The most values a fed-back point takes: its token and a vertex.
-const MAX_POINT_VALUES: usize = 1 + MAX_VERTEX_VALUES;
+pub(crate) const MAX_POINT_VALUES: usize = 1 + MAX_VERTEX_VALUES;
 
 /// Writes lane `lane` of a block's `[window, color, tex_coord]` to the start of `out` as a
 /// fed-back vertex of the layout whose flags are `[z, w, color, texture]`; returns how many
@@ -98,6 +98,30 @@ pub struct FeedbackLayout {
 }
 
 impl FeedbackLayout {
+    /// Lays out the points of a block's `[window, color, tex_coord]` whose lanes are `visible`
+    /// (GL_POINT_TOKEN, then each vertex's values) into `out`; returns how many values it
+    /// wrote.
+    pub(crate) fn encode_points(
+        &self,
+        visible: &[bool; LANES],
+        arrays: [&Lanes4; 3],
+        out: &mut [f32; LANES * MAX_POINT_VALUES],
+    ) -> usize {
+        match (self.z, self.w, self.color, self.texture) {
+            (false, ..) => encode_points::<false, false, false, false>(visible, arrays, out),
+            (true, false, false, false) => {
+                encode_points::<true, false, false, false>(visible, arrays, out)
+            }
+            (true, false, true, false) => {
+                encode_points::<true, false, true, false>(visible, arrays, out)
+            }
+            (true, false, true, true) => {
+                encode_points::<true, false, true, true>(visible, arrays, out)
+            }
+            _ => encode_points::<true, true, true, true>(visible, arrays, out),
+        }
+    }
+
     /// Writes `vertex`'s values in this layout to the start of `out`; returns how many.
     pub(crate) fn encode(&self, vertex: &FeedbackVertex, out: &mut [f32]) -> usize {
         let mut n = 0;
@@ -479,21 +503,7 @@ impl FeedbackBuffer {
             return;
         };
         let mut values = [0.0; LANES * MAX_POINT_VALUES];
-        let arrays = [window, color, tex_coord];
-        let out = &mut values;
-        let len = match (layout.z, layout.w, layout.color, layout.texture) {
-            (false, ..) => encode_points::<false, false, false, false>(visible, arrays, out),
-            (true, false, false, false) => {
-                encode_points::<true, false, false, false>(visible, arrays, out)
-            }
-            (true, false, true, false) => {
-                encode_points::<true, false, true, false>(visible, arrays, out)
-            }
-            (true, false, true, true) => {
-                encode_points::<true, false, true, true>(visible, arrays, out)
-            }
-            _ => encode_points::<true, true, true, true>(visible, arrays, out),
-        };
+        let len = layout.encode_points(visible, [window, color, tex_coord], &mut values);
         self.values_of(&values[..len]);
     }
 
