@@ -37,24 +37,23 @@ pub(crate) fn encode_lane(
     [window, color, tex_coord]: [&Lanes4; 3],
     out: &mut [f32; MAX_VERTEX_VALUES],
 ) -> usize {
-    let mut k = 0;
-    let mut put = |value: f32| {
-        out[k] = value;
-        k += 1;
-    };
-    put(window[0][lane]);
-    put(window[1][lane]);
-    if z {
-        put(window[2][lane]);
+    // Plain stores at offsets the flags decide: a closure counting them did not inline.
+    out[0] = window[0][lane];
+    out[1] = window[1][lane];
+    let mut k = 2;
+    for (flag, value) in [(z, window[2][lane]), (w, window[3][lane])] {
+        if flag {
+            out[k] = value;
+            k += 1;
+        }
     }
-    if w {
-        put(window[3][lane]);
-    }
-    if with_color {
-        (0..4).for_each(|c| put(color[c][lane]));
-    }
-    if with_texture {
-        (0..4).for_each(|c| put(tex_coord[c][lane]));
+    for (flag, values) in [(with_color, color), (with_texture, tex_coord)] {
+        if flag {
+            for (c, component) in values.iter().enumerate() {
+                out[k + c] = component[lane];
+            }
+            k += 4;
+        }
     }
     k
 }
@@ -69,13 +68,14 @@ fn encode_points<const Z: bool, const W: bool, const COLOR: bool, const TEXTURE:
     arrays: [&Lanes4; 3],
     out: &mut [f32; LANES * MAX_POINT_VALUES],
 ) -> usize {
+    // A constant, so that the copies below compile to the layout's moves.
+    let per_point = 3 + Z as usize + W as usize + 4 * COLOR as usize + 4 * TEXTURE as usize;
     let mut n = 0;
     for (lane, &visible) in visible.iter().enumerate() {
         let mut point = [GL_POINT_TOKEN as f32; MAX_POINT_VALUES];
         let mut vertex = [0.0; MAX_VERTEX_VALUES];
-        let per_vertex = encode_lane([Z, W, COLOR, TEXTURE], lane, arrays, &mut vertex);
+        encode_lane([Z, W, COLOR, TEXTURE], lane, arrays, &mut vertex);
         point[1..].copy_from_slice(&vertex);
-        let per_point = 1 + per_vertex;
         out[n..n + per_point].copy_from_slice(&point[..per_point]);
         n += per_point * usize::from(visible);
     }

@@ -89,10 +89,13 @@ impl PointsDraw<'_> {
         let (visible, window) = visible_points(&self.viewport, &self.planes, block);
         match &self.layout {
             Some(layout) => {
-                let mut values = [0.0; LANES * MAX_POINT_VALUES];
+                // Laid out in place: room for a whole block, then cut to what it wrote.
+                let at = out.values.len();
+                out.values.resize(at + LANES * MAX_POINT_VALUES, 0.0);
+                let room = (&mut out.values[at..]).try_into().expect("a block's room");
                 let arrays = [&window, &block.front_primary, &block.tex_coord];
-                let len = layout.encode_points(&visible, arrays, &mut values);
-                out.values.extend_from_slice(&values[..len]);
+                let len = layout.encode_points(&visible, arrays, room);
+                out.values.truncate(at + len);
             }
             None => {
                 for lane in (0..LANES).filter(|&lane| visible[lane]) {
