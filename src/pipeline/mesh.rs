@@ -54,8 +54,8 @@ const LIT_BLOCKS: usize = 16;
 
 /// Triangles per chunk of a draw split across threads: a chunk starts with an empty cache,
 /// so a mesh lights the vertices its first row shares with the chunk before again (for rows
-/// of 1000 vertices, one vertex in 16).
-const CHUNK_TRIANGLES: usize = 32 * 1024;
+/// of 1000 vertices, one vertex in 8); its output is at most 16384 * 38 values (2.4 MiB).
+const CHUNK_TRIANGLES: usize = 16 * 1024;
 
 /// The most values a vertex keeps for both faces.
 const MAX_SLOT_VALUES: usize = 2 * MAX_VERTEX_VALUES;
