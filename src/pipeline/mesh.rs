@@ -11,6 +11,16 @@
 //! feedback (selection ignores polygon modes, §5.2). Edge flags only matter to the other
 //! polygon modes. Everything else takes the general path (`DrawStream`); the values are the
 //! same bits either way, since each is computed by the same operations from the same inputs.
+//!
+//! A large draw is split into chunks of `CHUNK_TRIANGLES` triangles run on helper threads
+//! (`parallel::in_order`), each into an output of its own (values, clipped triangles,
+//! selection depths) that the calling thread writes in order; the calling thread runs a chunk
+//! itself straight into the buffer when it is the next one. Which thread lights a vertex, and
+//! with which others, changes nothing in its bits, so the result is the same for any thread
+//! count. The working set is fixed: per thread a cache (about 1 MiB) and two outputs of at
+//! most a chunk's values.
+
+use std::sync::Mutex;
 
 use glam::Vec4;
 
@@ -26,7 +36,6 @@ use crate::lighting::batch::{Faces, process_blocks};
 use crate::lighting::lanes::LANES;
 use crate::state::raster::ViewportMap;
 use crate::threads::threads_for;
-use std::sync::Mutex;
 
 use super::parallel::{Step, in_order};
 
@@ -45,8 +54,8 @@ const LIT_BLOCKS: usize = 16;
 
 /// Triangles per chunk of a draw split across threads: a chunk starts with an empty cache,
 /// so a mesh lights the vertices its first row shares with the chunk before again (for rows
-/// of 1000 vertices, one vertex in 16).
-const CHUNK_TRIANGLES: usize = 32 * 1024;
+/// of 1000 vertices, one vertex in 8); its output is at most 16384 * 38 values (2.4 MiB).
+const CHUNK_TRIANGLES: usize = 16 * 1024;
 
 /// The most values a vertex keeps for both faces.
 const MAX_SLOT_VALUES: usize = 2 * MAX_VERTEX_VALUES;
