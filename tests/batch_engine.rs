@@ -437,6 +437,22 @@ fn point_blocks_equal_the_per_vertex_path() {
     );
 }
 
+/// `count` random positions of three floats, read as both the vertex and the normal array.
+fn random_arrays(rng: &mut Rng, count: usize) -> Vec<u8> {
+    let floats: Vec<f32> = (0..count * 3).map(|_| rng.uniform(-1.5, 1.5)).collect();
+    floats.iter().flat_map(|f| f.to_ne_bytes()).collect()
+}
+
+/// A copy of `base` drawing from `random_arrays`.
+fn with_arrays(base: &Context) -> Context {
+    let mut ctx = base.clone();
+    ctx.vertex_pointer(3, GL_FLOAT, 0, 4096).unwrap();
+    ctx.normal_pointer(GL_FLOAT, 0, 4096).unwrap();
+    ctx.client_state(GL_VERTEX_ARRAY, true).unwrap();
+    ctx.client_state(GL_NORMAL_ARRAY, true).unwrap();
+    ctx
+}
+
 /// Large glDrawArrays are lit on helper threads and streamed in order: the feedback is the
 /// same, token for token, whatever the thread count, for points and for a strip whose
 /// triangles span the chunks the helpers share out.
@@ -447,8 +463,7 @@ fn draws_do_not_depend_on_the_thread_count() {
     let mut rng = Rng(31);
     let base = random_state(&mut rng);
     let count = 2 * fflight::threads::MIN_VERTICES_PER_THREAD + 1001;
-    let floats: Vec<f32> = (0..count * 3).map(|_| rng.uniform(-1.5, 1.5)).collect();
-    let bytes: Vec<u8> = floats.iter().flat_map(|f| f.to_ne_bytes()).collect();
+    let bytes = random_arrays(&mut rng, count);
     let sources = ArraySources::new(0)
         .with(ArrayKind::Vertex, &bytes)
         .with(ArrayKind::Normal, &bytes);
@@ -456,11 +471,7 @@ fn draws_do_not_depend_on_the_thread_count() {
         let mut results = Vec::new();
         for threads in [1, 2, 3] {
             fflight::threads::set_threads(threads).unwrap();
-            let mut ctx = base.clone();
-            ctx.vertex_pointer(3, GL_FLOAT, 0, 4096).unwrap();
-            ctx.normal_pointer(GL_FLOAT, 0, 4096).unwrap();
-            ctx.client_state(GL_VERTEX_ARRAY, true).unwrap();
-            ctx.client_state(GL_NORMAL_ARRAY, true).unwrap();
+            let mut ctx = with_arrays(&base);
             ctx.feedback_buffer(i32::MAX, GL_3D_COLOR, 1).unwrap();
             ctx.render_mode(GL_FEEDBACK).unwrap();
             let all = ElementIndices::Sequential { first: 0, count };
@@ -655,4 +666,80 @@ fn every_instruction_set_agrees_with_the_scalar_path() {
         }
     }
     eprintln!("lanes served: AVX2 {}, AVX-512 {}", served[0], served[1]);
+}
+
+/// Large glDrawArrays(GL_POINTS) in feedback or selection mode run chunk by chunk on the
+/// threads (`pipeline::points`): the same feedback values, token for token, and the same hit
+/// records as one thread, with a user clip plane culling some points, and with a feedback
+/// buffer too small for them (GL_RenderMode then returns -1 and the values that fit).
+#[test]
+fn threaded_points_equal_one_thread() {
+    use fflight::commands::arrays::{ArraySources, ElementIndices};
+    use fflight::state::arrays::ArrayKind;
+    let mut rng = Rng(47);
+    let base = random_state(&mut rng);
+    let count = 3 * fflight::threads::MIN_VERTICES_PER_THREAD + 777;
+    let bytes = random_arrays(&mut rng, count);
+    let sources = ArraySources::new(0)
+        .with(ArrayKind::Vertex, &bytes)
+        .with(ArrayKind::Normal, &bytes);
+    // (render mode, feedback buffer size, user clip plane)
+    let cases = [
+        (GL_FEEDBACK, i32::MAX, false),
+        (GL_FEEDBACK, i32::MAX, true),
+        (GL_FEEDBACK, 100_003, false),
+        (GL_SELECT, 0, true),
+    ];
+    let mut unclipped = 0;
+    for (mode, size, plane) in cases {
+        let mut results = Vec::new();
+        for threads in [1, 2, 3] {
+            fflight::threads::set_threads(threads).unwrap();
+            let mut ctx = with_arrays(&base);
+            if plane {
+                ctx.clip_plane(GL_CLIP_PLANE0, [1.0, 0.5, 0.0, 0.2])
+                    .unwrap();
+                ctx.set_capability(GL_CLIP_PLANE0, true).unwrap();
+            }
+            if mode == GL_FEEDBACK {
+                ctx.feedback_buffer(size, GL_3D_COLOR, 1).unwrap();
+            } else {
+                ctx.select_buffer(64, 1).unwrap();
+            }
+            ctx.render_mode(mode).unwrap();
+            if mode == GL_SELECT {
+                ctx.init_names().unwrap();
+                ctx.push_name(7).unwrap();
+            }
+            let all = ElementIndices::Sequential { first: 0, count };
+            ctx.draw_arrays_from(GL_POINTS, &sources, &all).unwrap();
+            let (written, finished) = ctx.render_mode(GL_RENDER).unwrap();
+            let finished = finished.expect("feedback or selection ended");
+            let values: Vec<u32> = finished.values.iter().map(|v| v.to_bits()).collect();
+            results.push((written, values, finished.hit_records));
+        }
+        fflight::threads::set_threads(0).unwrap();
+        let (written, values, hits) = &results[0];
+        if mode == GL_FEEDBACK && size < i32::MAX {
+            assert_eq!((*written, values.len()), (-1, size as usize), "overflow");
+        } else if mode == GL_FEEDBACK && !plane {
+            assert!(*written > 10_000, "{written} values");
+            unclipped = *written;
+        } else if mode == GL_FEEDBACK {
+            assert!(
+                (10_000..unclipped).contains(written),
+                "the plane culls some points"
+            );
+        } else {
+            assert_eq!((*written, hits.len()), (1, 4), "one hit record of one name");
+        }
+        assert!(
+            results[1] == results[0],
+            "2 threads, {mode:#x} {size} {plane}"
+        );
+        assert!(
+            results[2] == results[0],
+            "3 threads, {mode:#x} {size} {plane}"
+        );
+    }
 }

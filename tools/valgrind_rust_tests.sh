@@ -21,11 +21,14 @@
 #               14 s and 80 s of random states and sequences natively: 10 to 60 minutes
 #               under memcheck. The sweep below covers the same entry points with hostile
 #               arguments under memcheck; ASan and memcheck also run every C program.
+#   mesh_draws  13 s of large indexed draws in a debug build: minutes under memcheck; the
+#               mesh path it covers has no unsafe code, and its draws enter through the same
+#               entry points as the C programs'.
 set -u
 cd "$(dirname "$0")/.."
 out=target/valgrind-rust
 mkdir -p "$out"
-skip=" c_programs sweep header symbols fuzz_replay osmesa_fuzz batch_engine robustness "
+skip=" c_programs sweep header symbols fuzz_replay osmesa_fuzz batch_engine robustness mesh_draws "
 VALGRIND="valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite"
 
 cargo test --no-run --message-format=json 2>/dev/null |

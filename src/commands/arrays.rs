@@ -20,6 +20,7 @@ use crate::commands::buffers::with_stores;
 use crate::context::Context;
 use crate::error::{GlError, GlResult, try_copy};
 use crate::gl::*;
+use crate::lighting::batch::Faces;
 use crate::lighting::lanes::LANES;
 use crate::pipeline::block::InputBlock;
 use crate::pipeline::fetch::ArrayFetch;
@@ -67,7 +68,7 @@ pub enum ElementIndices<'a> {
     },
 }
 
-impl ElementIndices<'_> {
+impl<'a> ElementIndices<'a> {
     /// How many vertices the draw has.
     ///
     /// # Examples
@@ -148,12 +149,94 @@ impl ElementIndices<'_> {
             ElementIndices::Sequential { first, count } => {
                 Some((first, first.saturating_add(count - 1)))
             }
-            ElementIndices::Listed { .. } => {
-                let mut range: Option<(usize, usize)> = None;
-                self.for_each(|i| {
-                    range = Some(range.map_or((i, i), |(lo, hi)| (lo.min(i), hi.max(i))));
+            ElementIndices::Listed { index_type, bytes } => {
+                // Folds without a branch per index, so that the loops vectorize.
+                fn min_max(indices: impl Iterator<Item = usize>) -> Option<(usize, usize)> {
+                    let (lo, hi) =
+                        indices.fold((usize::MAX, 0), |(lo, hi), i| (lo.min(i), hi.max(i)));
+                    // Empty leaves lo above hi; the indices are at most u32::MAX.
+                    (lo <= hi).then_some((lo, hi))
+                }
+                match index_type {
+                    GL_UNSIGNED_BYTE => min_max(bytes.iter().map(|&i| i as usize)),
+                    GL_UNSIGNED_SHORT => min_max(
+                        bytes
+                            .chunks_exact(2)
+                            .map(|c| u16::from_ne_bytes([c[0], c[1]]) as usize),
+                    ),
+                    GL_UNSIGNED_INT => min_max(
+                        bytes
+                            .chunks_exact(4)
+                            .map(|c| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]) as usize),
+                    ),
+                    _ => None,
+                }
+            }
+        }
+    }
+
+    /// Elements `start..end` of these (clamped to their number).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ElementIndices, gl::*};
+    /// let listed = ElementIndices::Listed { index_type: GL_UNSIGNED_BYTE, bytes: &[2, 0, 1, 5] };
+    /// assert_eq!(listed.slice(1, 3).range(), Some((0, 1)));
+    /// let sequential = ElementIndices::Sequential { first: 10, count: 5 };
+    /// assert_eq!(sequential.slice(3, 9), ElementIndices::Sequential { first: 13, count: 2 });
+    /// ```
+    pub fn slice(&self, start: usize, end: usize) -> ElementIndices<'a> {
+        let end = end.min(self.len());
+        let start = start.min(end);
+        match *self {
+            ElementIndices::Sequential { first, .. } => ElementIndices::Sequential {
+                first: first + start,
+                count: end - start,
+            },
+            ElementIndices::Listed { index_type, bytes } => {
+                let size = index_size(index_type).unwrap_or(1);
+                ElementIndices::Listed {
+                    index_type,
+                    bytes: &bytes[start * size..end * size],
+                }
+            }
+        }
+    }
+
+    /// Calls `f` with the indices of each separate triangle, in order (GL_TRIANGLES' grouping,
+    /// §2.6.1): an incomplete last triangle is dropped.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::{commands::arrays::ElementIndices, gl::*};
+    /// let mut seen = Vec::new();
+    /// let listed = ElementIndices::Listed { index_type: GL_UNSIGNED_BYTE, bytes: &[2, 0, 1, 5, 4] };
+    /// listed.for_each_triangle(|t| seen.push(t));
+    /// assert_eq!(seen, [[2, 0, 1]]);
+    /// ```
+    pub fn for_each_triangle(&self, mut f: impl FnMut([usize; 3])) {
+        match *self {
+            ElementIndices::Listed {
+                index_type: GL_UNSIGNED_INT,
+                bytes,
+            } => bytes.chunks_exact(12).for_each(|c| {
+                f(std::array::from_fn(|k| {
+                    u32::from_ne_bytes([c[4 * k], c[4 * k + 1], c[4 * k + 2], c[4 * k + 3]])
+                        as usize
+                }))
+            }),
+            _ => {
+                let (mut corners, mut k) = ([0; 3], 0);
+                self.for_each(|index| {
+                    corners[k] = index;
+                    k += 1;
+                    if k == 3 {
+                        k = 0;
+                        f(corners);
+                    }
                 });
-                range
             }
         }
     }
@@ -1086,6 +1169,13 @@ impl Context {
         let mut stream = self.begin_stream(mode);
         if let ElementIndices::Sequential { first, count } = *indices {
             let threads = threads_for(count);
+            if threads > 1
+                && mode == GL_POINTS
+                && stream.faces() == Faces::Front
+                && self.draw_points_on_threads(&derived, fetch, &input, (first, count), threads)
+            {
+                return self.end_stream(stream);
+            }
             if threads > 1 {
                 let fill = |block: usize, input: &mut InputBlock| {
                     let start = first + block * LANES;
@@ -1122,6 +1212,12 @@ impl Context {
     /// is lit once while it stays cached.
     fn draw_elements_with(&mut self, mode: GLenum, fetch: &ArrayFetch, indices: &ElementIndices) {
         let derived = self.shared_derived();
+        if let Some(draw) = self.mesh_draw(mode, &derived, fetch) {
+            let mut cache = std::mem::take(&mut self.vertex_cache.mesh);
+            self.draw_mesh(&mut cache, &draw, indices);
+            self.vertex_cache.mesh = cache;
+            return;
+        }
         let mut input = InputBlock::with_attribs(&self.current);
         let mut stream = self.begin_stream(mode);
         let mut cache = std::mem::take(&mut self.vertex_cache);

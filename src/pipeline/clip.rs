@@ -62,6 +62,21 @@ pub fn view_volume_mask([x, y, z, w]: [f32; 4]) -> u32 {
     mask
 }
 
+/// `view_volume_mask` of each lane's clip-space point.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::pipeline::clip::view_volume_masks;
+/// let mut clip = [[0.0; 8], [0.0; 8], [0.0; 8], [1.0; 8]];
+/// clip[0][1] = 1.5; // lane 1 beyond x = w
+/// assert_eq!(view_volume_masks(&clip)[..2], [0, 0b1]);
+/// ```
+#[inline(always)]
+pub fn view_volume_masks([x, y, z, w]: &Lanes4) -> [u32; LANES] {
+    std::array::from_fn(|lane| view_volume_mask([x[lane], y[lane], z[lane], w[lane]]))
+}
+
 /// Whether each lane's clip-space point is inside the view volume, `view_volume_mask(..) == 0`
 /// lane by lane: every coordinate finite and every w ± coordinate at least 0 (so not NaN).
 /// Written over whole lanes, with `&` rather than `&&`, so it compiles to vector code.

@@ -22,10 +22,41 @@ fn copy_short(to: &mut [f32], values: &[f32]) {
 }
 
 /// The most values a fed-back vertex takes: a GL_4D_COLOR_TEXTURE one.
-const MAX_VERTEX_VALUES: usize = 12;
+pub(crate) const MAX_VERTEX_VALUES: usize = 12;
 
 /// The most values a fed-back point takes: its token and a vertex.
-const MAX_POINT_VALUES: usize = 1 + MAX_VERTEX_VALUES;
+pub(crate) const MAX_POINT_VALUES: usize = 1 + MAX_VERTEX_VALUES;
+
+/// Writes lane `lane` of a block's `[window, color, tex_coord]` to the start of `out` as a
+/// fed-back vertex of the layout whose flags are `[z, w, color, texture]`; returns how many
+/// values. Inlined with constant flags, it compiles to the layout's moves alone.
+#[inline(always)]
+pub(crate) fn encode_lane(
+    [z, w, with_color, with_texture]: [bool; 4],
+    lane: usize,
+    [window, color, tex_coord]: [&Lanes4; 3],
+    out: &mut [f32; MAX_VERTEX_VALUES],
+) -> usize {
+    // Plain stores at offsets the flags decide: a closure counting them did not inline.
+    out[0] = window[0][lane];
+    out[1] = window[1][lane];
+    let mut k = 2;
+    for (flag, value) in [(z, window[2][lane]), (w, window[3][lane])] {
+        if flag {
+            out[k] = value;
+            k += 1;
+        }
+    }
+    for (flag, values) in [(with_color, color), (with_texture, tex_coord)] {
+        if flag {
+            for (c, component) in values.iter().enumerate() {
+                out[k + c] = component[lane];
+            }
+            k += 4;
+        }
+    }
+    k
+}
 
 /// Lays out the points of a block's `[window, color, tex_coord]` whose lanes are `visible`
 /// as feedback does (GL_POINT_TOKEN, then the values of `FeedbackBuffer::vertex`); returns
@@ -34,34 +65,19 @@ const MAX_POINT_VALUES: usize = 1 + MAX_VERTEX_VALUES;
 #[inline(always)]
 fn encode_points<const Z: bool, const W: bool, const COLOR: bool, const TEXTURE: bool>(
     visible: &[bool; LANES],
-    [window, color, tex_coord]: [&Lanes4; 3],
+    arrays: [&Lanes4; 3],
     out: &mut [f32; LANES * MAX_POINT_VALUES],
 ) -> usize {
+    // A constant, so that the copies below compile to the layout's moves.
     let per_point = 3 + Z as usize + W as usize + 4 * COLOR as usize + 4 * TEXTURE as usize;
     let mut n = 0;
-    for lane in 0..LANES {
+    for (lane, &visible) in visible.iter().enumerate() {
         let mut point = [GL_POINT_TOKEN as f32; MAX_POINT_VALUES];
-        let mut k = 1;
-        let mut put = |value: f32| {
-            point[k] = value;
-            k += 1;
-        };
-        put(window[0][lane]);
-        put(window[1][lane]);
-        if Z {
-            put(window[2][lane]);
-        }
-        if W {
-            put(window[3][lane]);
-        }
-        if COLOR {
-            (0..4).for_each(|c| put(color[c][lane]));
-        }
-        if TEXTURE {
-            (0..4).for_each(|c| put(tex_coord[c][lane]));
-        }
+        let mut vertex = [0.0; MAX_VERTEX_VALUES];
+        encode_lane([Z, W, COLOR, TEXTURE], lane, arrays, &mut vertex);
+        point[1..].copy_from_slice(&vertex);
         out[n..n + per_point].copy_from_slice(&point[..per_point]);
-        n += per_point * usize::from(visible[lane]);
+        n += per_point * usize::from(visible);
     }
     n
 }
@@ -82,8 +98,32 @@ pub struct FeedbackLayout {
 }
 
 impl FeedbackLayout {
+    /// Lays out the points of a block's `[window, color, tex_coord]` whose lanes are `visible`
+    /// (GL_POINT_TOKEN, then each vertex's values) into `out`; returns how many values it
+    /// wrote.
+    pub(crate) fn encode_points(
+        &self,
+        visible: &[bool; LANES],
+        arrays: [&Lanes4; 3],
+        out: &mut [f32; LANES * MAX_POINT_VALUES],
+    ) -> usize {
+        match (self.z, self.w, self.color, self.texture) {
+            (false, ..) => encode_points::<false, false, false, false>(visible, arrays, out),
+            (true, false, false, false) => {
+                encode_points::<true, false, false, false>(visible, arrays, out)
+            }
+            (true, false, true, false) => {
+                encode_points::<true, false, true, false>(visible, arrays, out)
+            }
+            (true, false, true, true) => {
+                encode_points::<true, false, true, true>(visible, arrays, out)
+            }
+            _ => encode_points::<true, true, true, true>(visible, arrays, out),
+        }
+    }
+
     /// Writes `vertex`'s values in this layout to the start of `out`; returns how many.
-    fn encode(&self, vertex: &FeedbackVertex, out: &mut [f32]) -> usize {
+    pub(crate) fn encode(&self, vertex: &FeedbackVertex, out: &mut [f32]) -> usize {
         let mut n = 0;
         let mut put = |v: &[f32]| {
             out[n..n + v.len()].copy_from_slice(v);
@@ -282,6 +322,22 @@ impl FeedbackBuffer {
         }
     }
 
+    /// Appends `len` values (at most a triangle's: 2 + 3 * 12) that `write` puts in the slice
+    /// it is given: in place in the application's memory when they fit, else through
+    /// `values_of`, which keeps those that fit and marks the overflow.
+    pub(crate) fn append_with(&mut self, len: usize, write: impl FnOnce(&mut [f32])) {
+        if let FeedbackStorage::Application(memory) = &mut self.storage
+            && self.capacity - self.written >= len
+        {
+            write(&mut memory.as_mut_slice()[self.written..self.written + len]);
+            self.written += len;
+            return;
+        }
+        let mut staged = [0.0; 2 + 3 * MAX_VERTEX_VALUES];
+        write(&mut staged[..len]);
+        self.values_of(&staged[..len]);
+    }
+
     /// Appends a token, as a float (§5.3).
     ///
     /// # Examples
@@ -447,21 +503,7 @@ impl FeedbackBuffer {
             return;
         };
         let mut values = [0.0; LANES * MAX_POINT_VALUES];
-        let arrays = [window, color, tex_coord];
-        let out = &mut values;
-        let len = match (layout.z, layout.w, layout.color, layout.texture) {
-            (false, ..) => encode_points::<false, false, false, false>(visible, arrays, out),
-            (true, false, false, false) => {
-                encode_points::<true, false, false, false>(visible, arrays, out)
-            }
-            (true, false, true, false) => {
-                encode_points::<true, false, true, false>(visible, arrays, out)
-            }
-            (true, false, true, true) => {
-                encode_points::<true, false, true, true>(visible, arrays, out)
-            }
-            _ => encode_points::<true, true, true, true>(visible, arrays, out),
-        };
+        let len = layout.encode_points(visible, [window, color, tex_coord], &mut values);
         self.values_of(&values[..len]);
     }
 

@@ -10,7 +10,9 @@ pub mod capture;
 pub mod clip;
 pub mod feedback;
 pub mod fetch;
+pub mod mesh;
 pub mod parallel;
+pub mod points;
 pub mod select;
 pub mod units;
 pub mod vertex;
@@ -24,10 +26,8 @@ use crate::lighting::FaceColors;
 use crate::lighting::batch::{Faces, process_blocks};
 use crate::lighting::lanes::LANES;
 use assembly::{Assembler, Primitive};
-use block::{InputBlock, OutputBlock, lanes4_get};
-use clip::{
-    ClipPlanes, PolygonVertex, clip_line, clip_triangle, inside_view_volume, point_visible,
-};
+use block::{InputBlock, OutputBlock};
+use clip::{ClipPlanes, PolygonVertex, clip_line, clip_triangle, point_visible};
 use feedback::FeedbackVertex;
 use vertex::{DerivedState, ProcessedVertex};
 
@@ -190,14 +190,7 @@ impl Context {
     /// A block of points (front colors), each culled unless inside every plane: fed back or
     /// selected lane by lane, the same as `feedback_point` for each.
     fn feedback_points(&mut self, planes: &ClipPlanes, block: &OutputBlock) {
-        let window = self.raster.viewport_map().window_lanes(&block.clip);
-        let mut visible = inside_view_volume(&block.clip);
-        visible[block.len..].fill(false);
-        if planes.has_user_planes() {
-            for (lane, visible) in visible.iter_mut().enumerate() {
-                *visible = *visible && planes.user_mask(lanes4_get(&block.eye, lane)) == 0;
-            }
-        }
+        let (visible, window) = points::visible_points(&self.raster.viewport_map(), planes, block);
         if self.selecting() {
             for lane in (0..LANES).filter(|&lane| visible[lane]) {
                 self.selection.hit(window[2][lane]);

@@ -26,15 +26,15 @@ type Chunk = Vec<OutputBlock>;
 
 /// The chunk buffers not in use. `None` once the draw is over, which sends waiting helpers
 /// home.
-struct FreeChunks {
-    chunks: Mutex<Option<Vec<Chunk>>>,
+struct FreeChunks<C = Chunk> {
+    chunks: Mutex<Option<Vec<C>>>,
     returned: Condvar,
 }
 
-impl FreeChunks {
+impl<C> FreeChunks<C> {
     /// A free buffer, waiting for one if `wait`; `None` when the draw is over (or, without
     /// `wait`, when none is free).
-    fn take(&self, wait: bool) -> Option<Chunk> {
+    fn take(&self, wait: bool) -> Option<C> {
         let mut free = self.chunks.lock().unwrap_or_else(|e| e.into_inner());
         loop {
             match free.as_mut()?.pop() {
@@ -45,7 +45,7 @@ impl FreeChunks {
         }
     }
 
-    fn put(&self, chunk: Chunk) {
+    fn put(&self, chunk: C) {
         let mut free = self.chunks.lock().unwrap_or_else(|e| e.into_inner());
         if let Some(free) = free.as_mut() {
             free.push(chunk);
@@ -61,9 +61,9 @@ impl FreeChunks {
 }
 
 /// Closes the free list when dropped, so that helpers never wait for a caller that is gone.
-struct CloseOnDrop<'a>(&'a FreeChunks);
+struct CloseOnDrop<'a, C = Chunk>(&'a FreeChunks<C>);
 
-impl Drop for CloseOnDrop<'_> {
+impl<C> Drop for CloseOnDrop<'_, C> {
     fn drop(&mut self) {
         self.0.close();
     }
@@ -194,6 +194,97 @@ pub fn light_in_order(
             outputs.iter().for_each(&mut stream);
             outputs.resize(CHUNK_BLOCKS, OutputBlock::default());
             free.put(outputs);
+        }
+    });
+}
+
+/// What `in_order` asks of the calling thread.
+pub(crate) enum Step<'a, T> {
+    /// Run job `k` itself: every earlier job has been taken, so its results may go straight
+    /// where they belong.
+    Run(usize),
+    /// Take the output of the next job, which another thread ran.
+    Take(&'a mut T),
+}
+
+/// Runs `jobs` jobs, `helpers` helper threads running them into outputs (`make` makes one,
+/// `run(k, output)` runs job `k` into it), and hands them to `main` on the calling thread in
+/// order of job: `main(Step::Take(output))` for a job a helper ran, `main(Step::Run(k))` when
+/// the next job is still unclaimed (then the calling thread runs it). While the next job is
+/// being run elsewhere, the calling thread runs later ones into outputs too. A fixed set of
+/// outputs (two per thread) bounds how far the helpers run ahead.
+pub(crate) fn in_order<T: Send>(
+    jobs: usize,
+    helpers: usize,
+    make: impl Fn() -> T + Sync,
+    run: impl Fn(usize, &mut T) + Sync,
+    mut main: impl FnMut(Step<T>),
+) {
+    let free = FreeChunks {
+        chunks: Mutex::new(Some(
+            (0..BUFFERS_PER_THREAD * (helpers + 1))
+                .map(|_| make())
+                .collect(),
+        )),
+        returned: Condvar::new(),
+    };
+    let next_job = AtomicUsize::new(0);
+    std::thread::scope(|scope| {
+        let _close = CloseOnDrop(&free);
+        let (done_tx, done_rx) = channel::<(usize, T)>();
+        for _ in 0..helpers {
+            let (free, next_job, run, done_tx) = (&free, &next_job, &run, done_tx.clone());
+            scope.spawn(move || {
+                while let Some(mut output) = free.take(true) {
+                    let k = next_job.fetch_add(1, Ordering::Relaxed);
+                    if k >= jobs {
+                        return;
+                    }
+                    run(k, &mut output);
+                    if done_tx.send((k, output)).is_err() {
+                        return;
+                    }
+                }
+            });
+        }
+        drop(done_tx);
+        // Outputs that arrived before their turn.
+        let mut waiting: BTreeMap<usize, T> = BTreeMap::new();
+        for job in 0..jobs {
+            let mut output = loop {
+                if let Some(output) = waiting.remove(&job) {
+                    break Some(output);
+                }
+                if let Ok((k, output)) = done_rx.try_recv() {
+                    waiting.insert(k, output);
+                    continue;
+                }
+                let claimed =
+                    next_job.compare_exchange(job, job + 1, Ordering::Relaxed, Ordering::Relaxed);
+                if claimed.is_ok() {
+                    break None;
+                }
+                // The next job is someone else's: run a later one meanwhile, if an output
+                // is free.
+                if let Some(mut output) = free.take(false) {
+                    let k = next_job.fetch_add(1, Ordering::Relaxed);
+                    if k < jobs {
+                        run(k, &mut output);
+                        waiting.insert(k, output);
+                        continue;
+                    }
+                    free.put(output);
+                }
+                let (k, output) = done_rx.recv().expect("a helper runs each job it claims");
+                waiting.insert(k, output);
+            };
+            match &mut output {
+                None => main(Step::Run(job)),
+                Some(output) => main(Step::Take(output)),
+            }
+            if let Some(output) = output {
+                free.put(output);
+            }
         }
     });
 }

@@ -15,6 +15,9 @@ const SLOTS: usize = 4096;
 /// Indices taken at a time: their misses are lit together, then they are sent on in order.
 const WINDOW: usize = 256;
 
+/// Blocks of misses lit at a time: up to 16, so the widest kernel takes them two by two.
+const LIT_BLOCKS: usize = 16;
+
 #[derive(Clone, Copy, Debug, Default)]
 struct Slot {
     /// The array index whose vertex the slot holds; `usize::MAX` for none.
@@ -33,6 +36,11 @@ pub struct VertexCache {
     /// The current window's indices, and those of them that missed.
     pending: Vec<usize>,
     misses: Vec<usize>,
+    /// The blocks the misses are lit in.
+    inputs: Vec<InputBlock>,
+    outputs: Vec<OutputBlock>,
+    /// The cache of indexed separate triangles in feedback and selection.
+    pub(crate) mesh: super::mesh::MeshCache,
     /// The faces whose colors the draw reads.
     faces: Faces,
 }
@@ -152,8 +160,8 @@ impl VertexCache {
         }
     }
 
-    /// Lights the misses of the window, a block at a time, and sends its indices' vertices
-    /// on in order.
+    /// Lights the misses of the window, up to `LIT_BLOCKS` blocks at a time, and sends its
+    /// indices' vertices on in order.
     ///
     /// # Examples
     ///
@@ -208,17 +216,23 @@ impl VertexCache {
         input: &mut InputBlock,
         mut send: impl FnMut(&ProcessedVertex),
     ) {
-        let mut output = [OutputBlock::default()];
-        for block in self.misses.chunks(LANES) {
-            fetch.fill(input, block);
+        for batch in self.misses.chunks(LANES * LIT_BLOCKS) {
+            let blocks = batch.len().div_ceil(LANES);
+            // Each block starts as `input` (the attributes no array gives).
+            self.inputs.clear();
+            self.inputs.resize(blocks, *input);
+            self.outputs.resize(blocks, OutputBlock::default());
+            for (block, indices) in self.inputs.iter_mut().zip(batch.chunks(LANES)) {
+                fetch.fill(block, indices);
+            }
             process_blocks(
                 derived,
                 self.faces,
-                std::slice::from_ref(input),
-                &mut output,
+                &self.inputs,
+                &mut self.outputs[..blocks],
             );
-            for (lane, &index) in block.iter().enumerate() {
-                self.slots[index % SLOTS].vertex = output[0].vertex(lane);
+            for (k, &index) in batch.iter().enumerate() {
+                self.slots[index % SLOTS].vertex = self.outputs[k / LANES].vertex(k % LANES);
             }
         }
         for &index in &self.pending {

@@ -1,0 +1,168 @@
+//! Large `glDrawArrays(GL_POINTS)` in feedback or selection mode on several threads. Points
+//! need no assembly, so a chunk of them is fetched, lit, culled and laid out as feedback
+//! values (or reduced to its hits' extreme depths) by whichever thread takes it, and the
+//! calling thread appends the chunks' results in order: the same values, in the same order,
+//! as one thread streaming the points (`Context::feedback_points`).
+
+use super::block::{InputBlock, OutputBlock, lanes4_get};
+use super::clip::{ClipPlanes, inside_view_volume};
+use super::feedback::{FeedbackLayout, MAX_POINT_VALUES};
+use super::fetch::ArrayFetch;
+use super::parallel::{Step, in_order};
+use super::vertex::DerivedState;
+use crate::context::{Context, RenderMode};
+use crate::lighting::batch::{Faces, process_blocks};
+use crate::lighting::lanes::LANES;
+use crate::state::raster::ViewportMap;
+
+/// Blocks per chunk: 2048 points, whose feedback values (at most 13 each) take about 100 KiB.
+const CHUNK_BLOCKS: usize = 256;
+
+/// Blocks lit at a time: even, so the widest kernel takes them two by two.
+const LIT_BLOCKS: usize = 16;
+
+/// The window coordinates of a lit block's points, and which of them are drawn: inside the
+/// view volume and every enabled user clip plane (§2.12), and among the block's `len`.
+pub(crate) fn visible_points(
+    viewport: &ViewportMap,
+    planes: &ClipPlanes,
+    block: &OutputBlock,
+) -> ([bool; LANES], super::block::Lanes4) {
+    let window = viewport.window_lanes(&block.clip);
+    let mut visible = inside_view_volume(&block.clip);
+    visible[block.len..].fill(false);
+    if planes.has_user_planes() {
+        for (lane, visible) in visible.iter_mut().enumerate() {
+            *visible = *visible && planes.user_mask(lanes4_get(&block.eye, lane)) == 0;
+        }
+    }
+    (visible, window)
+}
+
+/// A chunk's results: its feedback values, or the extreme depths of its selection hits.
+#[derive(Default)]
+struct ChunkPoints {
+    values: Vec<f32>,
+    hits: Option<(f32, f32)>,
+}
+
+/// What every chunk of a draw shares.
+struct PointsDraw<'a> {
+    derived: &'a DerivedState,
+    fetch: &'a ArrayFetch<'a>,
+    template: InputBlock,
+    first: usize,
+    count: usize,
+    viewport: ViewportMap,
+    planes: ClipPlanes,
+    /// `None` in selection mode.
+    layout: Option<FeedbackLayout>,
+}
+
+impl PointsDraw<'_> {
+    /// Chunk `chunk`'s points into `out`.
+    fn run(&self, chunk: usize, out: &mut ChunkPoints) {
+        out.values.clear();
+        out.hits = None;
+        let mut inputs = [self.template; LIT_BLOCKS];
+        let mut outputs = [OutputBlock::default(); LIT_BLOCKS];
+        let blocks = self.count.div_ceil(LANES);
+        let chunk_end = blocks.min((chunk + 1) * CHUNK_BLOCKS);
+        for batch in (chunk * CHUNK_BLOCKS..chunk_end).step_by(LIT_BLOCKS) {
+            let batch_len = LIT_BLOCKS.min(chunk_end - batch);
+            for (k, input) in inputs[..batch_len].iter_mut().enumerate() {
+                let start = self.first + (batch + k) * LANES;
+                let indices: [usize; LANES] = std::array::from_fn(|lane| start + lane);
+                let len = LANES.min(self.first + self.count - start);
+                self.fetch.fill(input, &indices[..len]);
+            }
+            let lit = &mut outputs[..batch_len];
+            process_blocks(self.derived, Faces::Front, &inputs[..batch_len], lit);
+            for block in lit.iter() {
+                self.keep(block, out);
+            }
+        }
+    }
+
+    /// A lit block's visible points into `out`.
+    fn keep(&self, block: &OutputBlock, out: &mut ChunkPoints) {
+        let (visible, window) = visible_points(&self.viewport, &self.planes, block);
+        match &self.layout {
+            Some(layout) => {
+                // Laid out in place: room for a whole block, then cut to what it wrote.
+                let at = out.values.len();
+                out.values.resize(at + LANES * MAX_POINT_VALUES, 0.0);
+                let room = (&mut out.values[at..]).try_into().expect("a block's room");
+                let arrays = [&window, &block.front_primary, &block.tex_coord];
+                let len = layout.encode_points(&visible, arrays, room);
+                out.values.truncate(at + len);
+            }
+            None => {
+                for lane in (0..LANES).filter(|&lane| visible[lane]) {
+                    let z = window[2][lane];
+                    let (min, max) = out.hits.get_or_insert((z, z));
+                    *min = min.min(z);
+                    *max = max.max(z);
+                }
+            }
+        }
+    }
+}
+
+impl Context {
+    /// `count` points from element `first` of `fetch`'s arrays on `threads` threads, when
+    /// the draw is fed back (with a layout) or selected; false, having done nothing,
+    /// otherwise (render mode, or a feedback buffer without a layout).
+    pub(crate) fn draw_points_on_threads(
+        &mut self,
+        derived: &DerivedState,
+        fetch: &ArrayFetch,
+        template: &InputBlock,
+        (first, count): (usize, usize),
+        threads: usize,
+    ) -> bool {
+        let layout = match self.render_mode {
+            RenderMode::Render => return false,
+            RenderMode::Select => None,
+            RenderMode::Feedback => match self.feedback.layout {
+                Some(layout) => Some(layout),
+                None => return false,
+            },
+        };
+        let draw = PointsDraw {
+            derived,
+            fetch,
+            template: *template,
+            first,
+            count,
+            viewport: self.raster.viewport_map(),
+            planes: self.clip_planes(),
+            layout,
+        };
+        let chunks = count.div_ceil(LANES * CHUNK_BLOCKS);
+        let mut own = ChunkPoints::default();
+        in_order(
+            chunks,
+            threads - 1,
+            ChunkPoints::default,
+            |k, out| draw.run(k, out),
+            |step| {
+                let out = match step {
+                    Step::Run(k) => {
+                        draw.run(k, &mut own);
+                        &own
+                    }
+                    Step::Take(out) => &*out,
+                };
+                if let Some((min, max)) = out.hits {
+                    self.selection.hit(min);
+                    self.selection.hit(max);
+                }
+                if layout.is_some() {
+                    self.feedback.values_of(&out.values);
+                }
+            },
+        );
+        true
+    }
+}
