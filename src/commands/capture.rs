@@ -238,8 +238,8 @@ impl Context {
     /// block.len` into the block's lanes (the lanes hold the current attributes, and what
     /// `fill` puts there stays until it puts something else),
     /// `emit(first, block)` receives them lit (the colors of `faces`). Blocks are
-    /// independent, so the results do not
-    /// depend on the thread count; `emit` is called from the threads, each block once.
+    /// independent, so the results do not depend on the thread count; `emit` is called from
+    /// the threads, each block once.
     /// GL_INVALID_OPERATION between glBegin and glEnd.
     ///
     /// # Examples
