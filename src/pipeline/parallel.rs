@@ -22,11 +22,13 @@ const CHUNK_BLOCKS: usize = 256;
 /// Chunk buffers per thread: one being lit while another waits to be streamed.
 const BUFFERS_PER_THREAD: usize = 2;
 
-type Chunk = Vec<OutputBlock>;
+/// A chunk's input blocks (kept between the chunks an output serves: `fill` leaves in them
+/// what it does not set) and its lit blocks.
+type LitChunk = (Vec<InputBlock>, Vec<OutputBlock>);
 
 /// The chunk buffers not in use. `None` once the draw is over, which sends waiting helpers
 /// home.
-struct FreeChunks<C = Chunk> {
+struct FreeChunks<C> {
     chunks: Mutex<Option<Vec<C>>>,
     returned: Condvar,
 }
@@ -61,7 +63,7 @@ impl<C> FreeChunks<C> {
 }
 
 /// Closes the free list when dropped, so that helpers never wait for a caller that is gone.
-struct CloseOnDrop<'a, C = Chunk>(&'a FreeChunks<C>);
+struct CloseOnDrop<'a, C>(&'a FreeChunks<C>);
 
 impl<C> Drop for CloseOnDrop<'_, C> {
     fn drop(&mut self) {
@@ -120,82 +122,40 @@ pub fn light_in_order(
     mut stream: impl FnMut(&OutputBlock),
 ) {
     let chunks = blocks.div_ceil(CHUNK_BLOCKS);
-    let helpers = helpers.min(chunks.saturating_sub(1));
-    let free = FreeChunks {
-        chunks: Mutex::new(Some(
-            (0..BUFFERS_PER_THREAD * (helpers + 1))
-                .map(|_| vec![OutputBlock::default(); CHUNK_BLOCKS])
-                .collect(),
-        )),
-        returned: Condvar::new(),
-    };
-    let next_chunk = AtomicUsize::new(0);
-    // Claims the next chunk not yet claimed and lights it into `outputs`; gives `outputs`
-    // back when every chunk is claimed.
-    let light_next = |inputs: &mut [InputBlock], mut outputs: Chunk| {
-        let chunk = next_chunk.fetch_add(1, Ordering::Relaxed);
-        if chunk >= chunks {
-            return Err(outputs);
-        }
+    // Chunk `chunk`'s blocks, fetched into `lit.0` and lit into `lit.1`.
+    let light = |chunk: usize, lit: &mut LitChunk| {
         let first = chunk * CHUNK_BLOCKS;
         let len = CHUNK_BLOCKS.min(blocks - first);
+        let (inputs, outputs) = lit;
         for (k, input) in inputs[..len].iter_mut().enumerate() {
             fill(first + k, input);
         }
-        outputs.truncate(len);
-        process_blocks(derived, faces, &inputs[..len], &mut outputs);
-        Ok((chunk, outputs))
+        outputs.resize(len, OutputBlock::default());
+        process_blocks(derived, faces, &inputs[..len], outputs);
     };
-    std::thread::scope(|scope| {
-        let _close = CloseOnDrop(&free);
-        let (lit_tx, lit_rx) = channel::<(usize, Chunk)>();
-        for _ in 0..helpers {
-            let (free, light_next, lit_tx) = (&free, &light_next, lit_tx.clone());
-            scope.spawn(move || {
-                let mut inputs = vec![*template; CHUNK_BLOCKS];
-                while let Some(outputs) = free.take(true) {
-                    let Ok(lit) = light_next(&mut inputs, outputs) else {
-                        return;
-                    };
-                    if lit_tx.send(lit).is_err() {
-                        return;
-                    }
+    let new_chunk = || {
+        (
+            vec![*template; CHUNK_BLOCKS],
+            Vec::with_capacity(CHUNK_BLOCKS),
+        )
+    };
+    let mut own = new_chunk();
+    in_order(
+        chunks,
+        helpers.min(chunks.saturating_sub(1)),
+        new_chunk,
+        light,
+        |step| {
+            let lit = match step {
+                Step::Run(chunk) => {
+                    light(chunk, &mut own);
+                    &own
                 }
-            });
-        }
-        drop(lit_tx);
-        let mut inputs = vec![*template; CHUNK_BLOCKS];
-        // Lit chunks that arrived before their turn.
-        let mut waiting: BTreeMap<usize, Chunk> = BTreeMap::new();
-        for chunk in 0..chunks {
-            let outputs = loop {
-                if let Some(outputs) = waiting.remove(&chunk) {
-                    break outputs;
-                }
-                if let Ok((k, outputs)) = lit_rx.try_recv() {
-                    waiting.insert(k, outputs);
-                    continue;
-                }
-                // Nothing ready: light the next unclaimed chunk here, if a buffer is free.
-                if let Some(outputs) = free.take(false) {
-                    match light_next(&mut inputs, outputs) {
-                        Ok((k, outputs)) => {
-                            waiting.insert(k, outputs);
-                            continue;
-                        }
-                        Err(outputs) => free.put(outputs),
-                    }
-                }
-                // A helper has this chunk: wait for it.
-                let (k, outputs) = lit_rx.recv().expect("a helper lights each chunk it claims");
-                waiting.insert(k, outputs);
+                Step::Take(lit) => &*lit,
             };
-            let mut outputs = outputs;
-            outputs.iter().for_each(&mut stream);
-            outputs.resize(CHUNK_BLOCKS, OutputBlock::default());
-            free.put(outputs);
-        }
-    });
+            lit.1.iter().for_each(&mut stream);
+        },
+    );
 }
 
 /// What `in_order` asks of the calling thread.
