@@ -6,7 +6,7 @@
 
 use glam::{DVec4, Vec4};
 
-use super::block::Lanes4;
+use super::block::{Lanes4, OutputBlock, lanes4_get};
 use super::vertex::ProcessedVertex;
 use crate::lighting::lanes::LANES;
 use crate::lighting::{FaceColors, LitVertex};
@@ -77,37 +77,6 @@ pub fn view_volume_masks([x, y, z, w]: &Lanes4) -> [u32; LANES] {
     std::array::from_fn(|lane| view_volume_mask([x[lane], y[lane], z[lane], w[lane]]))
 }
 
-/// Whether each lane's clip-space point is inside the view volume, `view_volume_mask(..) == 0`
-/// lane by lane: every coordinate finite and every w ± coordinate at least 0 (so not NaN).
-/// Written over whole lanes, with `&` rather than `&&`, so it compiles to vector code.
-///
-/// # Examples
-///
-/// ```
-/// use fflight::pipeline::clip::inside_view_volume;
-/// let mut clip = [[0.0; 8], [0.0; 8], [0.0; 8], [1.0; 8]];
-/// clip[0][1] = 1.5; // lane 1 beyond x = w
-/// clip[3][2] = -1.0; // lane 2 behind the eye
-/// let inside = inside_view_volume(&clip);
-/// assert_eq!(inside, [true, false, false, true, true, true, true, true]);
-/// ```
-pub fn inside_view_volume(clip: &Lanes4) -> [bool; LANES] {
-    let [x, y, z, w] = clip;
-    let mut inside = [false; LANES];
-    for lane in 0..LANES {
-        let (x, y, z, w) = (x[lane], y[lane], z[lane], w[lane]);
-        let finite = x.is_finite() & y.is_finite() & z.is_finite();
-        inside[lane] = finite
-            & (w - x >= 0.0)
-            & (w + x >= 0.0)
-            & (w - y >= 0.0)
-            & (w + y >= 0.0)
-            & (w + z >= 0.0)
-            & (w - z >= 0.0);
-    }
-    inside
-}
-
 /// The planes a vertex is tested against: the view volume and the enabled user planes.
 #[derive(Clone, Debug)]
 pub struct ClipPlanes {
@@ -171,6 +140,30 @@ impl ClipPlanes {
         self.user.iter().enumerate().fold(0, |mask, (k, equation)| {
             mask | outside(equation.dot(eye) as f32) << (VIEW_VOLUME.len() + k)
         })
+    }
+
+    /// `outside_mask` of every lane of a processed block (lanes past its `len` included).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fflight::pipeline::{block::OutputBlock, clip::*};
+    /// use glam::DVec4;
+    /// let mut block = OutputBlock::default();
+    /// block.clip[3] = [1.0; 8];
+    /// block.clip[0][1] = 2.0; // lane 1 beyond x = w
+    /// block.eye[0][2] = -1.0; // lane 2 on the wrong side of x >= 0
+    /// let masks = ClipPlanes::new(vec![DVec4::X]).block_masks(&block);
+    /// assert_eq!(masks[..3], [0, 0b1, 1 << 6]);
+    /// ```
+    pub fn block_masks(&self, block: &OutputBlock) -> [u32; LANES] {
+        let mut masks = view_volume_masks(&block.clip);
+        if self.has_user_planes() {
+            for (lane, mask) in masks.iter_mut().enumerate() {
+                *mask |= self.user_mask(lanes4_get(&block.eye, lane));
+            }
+        }
+        masks
     }
 
     /// One bit per plane that `v` is outside of: its `distance` is negative or NaN (bits 0 to

@@ -24,8 +24,8 @@ use std::sync::Mutex;
 
 use glam::Vec4;
 
-use super::block::{InputBlock, OutputBlock, lanes4_get};
-use super::clip::{ClipPlanes, PolygonVertex, clip_triangle, view_volume_masks};
+use super::block::{InputBlock, OutputBlock};
+use super::clip::{ClipPlanes, PolygonVertex, clip_triangle};
 use super::feedback::{FeedbackLayout, FeedbackVertex, MAX_VERTEX_VALUES, encode_lane};
 use super::fetch::ArrayFetch;
 use super::vertex::{DerivedState, ProcessedVertex};
@@ -507,18 +507,13 @@ impl Slots {
     /// vertex's clip outcode and, per face, its feedback values (in selection, window x, y, z).
     fn keep_block<const N: usize>(&mut self, draw: &MeshDraw, output: &OutputBlock, slots: &[u32]) {
         let window = draw.viewport.window_lanes(&output.clip);
-        let masks = view_volume_masks(&output.clip);
+        let masks = draw.planes.block_masks(output);
         // The layout N values make: GL_2D, GL_3D (and selection), GL_3D_COLOR,
         // GL_3D_COLOR_TEXTURE, GL_4D_COLOR_TEXTURE.
         let flags = [N >= 3, N == 12, N >= 7, N >= 11];
         for (lane, &slot) in slots.iter().enumerate() {
             let slot = slot as usize;
-            let user = if draw.planes.has_user_planes() {
-                draw.planes.user_mask(lanes4_get(&output.eye, lane))
-            } else {
-                0
-            };
-            self.masks[slot] = masks[lane] | user;
+            self.masks[slot] = masks[lane];
             let values = &mut self.values[slot * 2 * N..][..2 * N];
             for (face, color) in [&output.front_primary, &output.back_primary]
                 .into_iter()

@@ -4,8 +4,8 @@
 //! calling thread appends the chunks' results in order: the same values, in the same order,
 //! as one thread streaming the points (`Context::feedback_points`).
 
-use super::block::{InputBlock, OutputBlock, lanes4_get};
-use super::clip::{ClipPlanes, inside_view_volume};
+use super::block::{InputBlock, OutputBlock};
+use super::clip::ClipPlanes;
 use super::feedback::{FeedbackLayout, MAX_POINT_VALUES};
 use super::fetch::ArrayFetch;
 use super::parallel::{Step, in_order};
@@ -28,15 +28,9 @@ pub(crate) fn visible_points(
     planes: &ClipPlanes,
     block: &OutputBlock,
 ) -> ([bool; LANES], super::block::Lanes4) {
-    let window = viewport.window_lanes(&block.clip);
-    let mut visible = inside_view_volume(&block.clip);
-    visible[block.len..].fill(false);
-    if planes.has_user_planes() {
-        for (lane, visible) in visible.iter_mut().enumerate() {
-            *visible = *visible && planes.user_mask(lanes4_get(&block.eye, lane)) == 0;
-        }
-    }
-    (visible, window)
+    let masks = planes.block_masks(block);
+    let visible = std::array::from_fn(|lane| lane < block.len && masks[lane] == 0);
+    (visible, viewport.window_lanes(&block.clip))
 }
 
 /// A chunk's results: its feedback values, or the extreme depths of its selection hits.
