@@ -20,26 +20,35 @@ fn clamp01(x: F) -> F {
     x.max(F::zero()).min(F::splat(1.0))
 }
 
-/// (`e·x^(e-1)`, `x^e`) for `x` >= 0, with 0^0 = 1: the power and its
-/// derivative, by repeated squaring.
+/// (`x^(e-1)`, `x^e`) for `x` >= 0, with 0^0 = 1 and `x^(e-1)` 0 for `e` = 0: the power and
+/// its slope over `e`, by repeated squaring. The slope's factor `e` is left to the constants
+/// it meets (`FastLight::specular_sensitivity`, `FastLight::spot_term_bounds`).
 #[inline(always)]
-fn power_and_slope(x: F, exponent: u32) -> (F, F) {
-    if exponent == 0 {
-        return (F::zero(), F::splat(1.0));
+fn power_and_below(x: F, exponent: u32) -> (F, F) {
+    if exponent <= 1 {
+        return if exponent == 0 {
+            (F::zero(), F::splat(1.0))
+        } else {
+            (F::splat(1.0), x)
+        };
     }
+    // x^(e-1) from the bits of e - 1, the lowest set bit's power first (no product by 1).
     let mut bits = exponent - 1;
     let mut base = x;
-    let mut below = F::splat(1.0);
+    while bits & 1 == 0 {
+        base = base * base;
+        bits >>= 1;
+    }
+    let mut below = base;
+    bits >>= 1;
     while bits != 0 {
+        base = base * base;
         if bits & 1 != 0 {
             below = below * base;
         }
         bits >>= 1;
-        if bits != 0 {
-            base = base * base;
-        }
     }
-    (below * F::splat(exponent as f32), below * x)
+    (below, below * x)
 }
 
 /// A 3-vector per lane.
@@ -265,8 +274,9 @@ struct Sums {
 /// What every light reads of the vertex.
 struct Vertex {
     position: V3,
-    /// |position|: with a light's, the scale of the rounding of the direction to the light.
-    position_length: F,
+    /// |position| / `ILL_CONDITIONED`: with a light's, how near the light the vertex may be
+    /// before the rounding of the direction to it grows too large.
+    conditioning: F,
     normal: V3,
     eye_direction: V3,
 }
@@ -364,7 +374,7 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
     };
     let vertex = Vertex {
         position,
-        position_length,
+        conditioning: position_length * F::splat(1.0 / ILL_CONDITIONED),
         normal,
         eye_direction,
     };
@@ -445,14 +455,15 @@ fn add_light<
         let inverse_distance = reciprocal_sqrt(distance_squared);
         let distance = distance_squared * inverse_distance;
         // The direction carries the positions' rounding divided by the distance.
-        let scale = vertex.position_length + F::splat(light.position_length);
-        sums.refused = sums.refused | (distance * F::splat(ILL_CONDITIONED)).lt(scale)
-            | distance.lt(F::splat(1e-6));
+        let conditioning = vertex.conditioning + F::splat(light.conditioning);
+        sums.refused = sums.refused | distance.lt(conditioning.max(F::splat(1e-6)));
         let to_light = offset.scale(inverse_distance);
         let attenuation = if ATTENUATION {
             let [k0, k1, k2] = light.attenuation_factors;
             let denominator = distance.mul_add(distance.mul_add(F::splat(k2), F::splat(k1)), F::splat(k0));
-            sums.refused = sums.refused | denominator.lt(F::splat(1.0 / 1024.0));
+            if light.checks_attenuation {
+                sums.refused = sums.refused | denominator.lt(F::splat(1.0 / 1024.0));
+            }
             Some(reciprocal(denominator))
         } else {
             None
@@ -461,24 +472,25 @@ fn add_light<
     } else {
         (V3::splat(light.position), None)
     };
+    // The spot factor and its slope over the exponent, 0 outside the cone.
     let spot = if SPOT {
-        let cos_angle = -to_light.dot(V3::splat(light.spot_direction));
+        let cos_angle = to_light.dot(V3::splat(light.spot_axis_to_light));
         let cutoff = F::splat(light.spot_cos_cutoff);
         sums.refused = sums.refused | (cos_angle - cutoff).abs().lt(F::splat(DISCONTINUITY));
         let inside = cos_angle.ge(cutoff);
-        let (slope, power) = power_and_slope(cos_angle.max(F::zero()), light.spot_exponent);
-        let slope = match attenuation {
-            Some(a) => a * slope,
-            None => slope,
+        let (below, power) = power_and_below(cos_angle.max(F::zero()), light.spot_exponent);
+        let below = match attenuation {
+            Some(a) => inside.keep_product(a, below),
+            None => inside.keep(below),
         };
-        Some((inside.keep(power), inside.keep(slope)))
+        Some((inside.keep(power), below))
     } else {
         None
     };
     // The spot factor's rounding reaches the light's whole contribution: its slope times
     // the light's terms, bounded after the faces below.
-    let (spot, spot_slope) = match spot {
-        Some((power, slope)) => (Some(power), Some(slope)),
+    let (spot, spot_below) = match spot {
+        Some((power, below)) => (Some(power), Some(below)),
         None => (None, None),
     };
     let weight = match (attenuation, spot) {
@@ -487,7 +499,9 @@ fn add_light<
         (None, Some(s)) => s,
         (None, None) => one,
     };
-    sums.ambient = sums.ambient.add_weighted(weight, light.ambient);
+    if light.has_ambient {
+        sums.ambient = sums.ambient.add_weighted(weight, light.ambient);
+    }
 
     let normal = vertex.normal;
     let n_dot_l = normal.dot(to_light);
@@ -507,7 +521,7 @@ fn add_light<
     // (and a power of 0 that is 0), one power of |n·h| serves both.
     let shininess = faces[0].shininess;
     let shared = if TWO_SIDE && shininess > 0 && faces[1].shininess == shininess {
-        Some(power_and_slope(n_dot_h.abs(), shininess))
+        Some(power_and_below(n_dot_h.abs(), shininess))
     } else {
         None
     };
@@ -521,30 +535,30 @@ fn add_light<
         };
         let diffuse = n_dot_l.max(F::zero());
         let lit = diffuse.gt(F::zero());
-        let (slope, power) = match shared {
-            Some((slope, power)) => {
-                let facing = n_dot_h.gt(F::zero());
-                (facing.keep(slope), facing.keep(power))
-            }
-            None => power_and_slope(n_dot_h.max(F::zero()), fast.shininess),
+        // The specular term counts where the face is lit (and, for the shared power, faces
+        // the half vector).
+        let ((below, power), counts) = match shared {
+            Some(powers) => (powers, lit & n_dot_h.gt(F::zero())),
+            None => (power_and_below(n_dot_h.max(F::zero()), fast.shininess), lit),
         };
+        let power = counts.keep(power);
         sums.diffuse[face] = sums.diffuse[face].add_weighted(weight * diffuse, light.diffuse);
-        sums.specular[face] = sums.specular[face].add_weighted(lit.keep(weight * power), light.specular);
-        sums.specular_sensitivity[face] = lit.keep(weight * slope).mul_add(
+        sums.specular[face] = sums.specular[face].add_weighted(weight * power, light.specular);
+        sums.specular_sensitivity[face] = counts.keep_product(weight, below).mul_add(
             F::splat(light.specular_sensitivity[face]),
             sums.specular_sensitivity[face],
         );
         if SPOT {
-            largest_power = largest_power.max(lit.keep(power));
+            largest_power = if face == 0 { power } else { largest_power.max(power) };
         }
     }
-    if let Some(slope) = spot_slope {
-        let [ambient, diffuse, specular] = light.term_bounds;
+    if let Some(below) = spot_below {
+        let [ambient, diffuse, specular] = light.spot_term_bounds;
         let terms = F::splat(diffuse).mul_add(
             n_dot_l.abs(),
             F::splat(specular).mul_add(largest_power, F::splat(ambient)),
         );
-        sums.sensitivity = slope.mul_add(terms, sums.sensitivity);
+        sums.sensitivity = below.mul_add(terms, sums.sensitivity);
     }
 }
 }

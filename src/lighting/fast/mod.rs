@@ -71,22 +71,34 @@ struct FastLight {
     ambient: [f32; 3],
     diffuse: [f32; 3],
     specular: [f32; 3],
+    /// Some ambient component is not 0: else the light adds no ambient term.
+    has_ambient: bool,
     /// Positional: the eye-space position. Directional: the unit direction to the light.
     position: [f32; 3],
-    /// |position|, for the conditioning of the direction to a positional light.
-    position_length: f32,
+    /// |position| / `ILL_CONDITIONED`, for the conditioning of the direction to a positional
+    /// light.
+    conditioning: f32,
     infinite_half: [f32; 3],
-    spot_direction: [f32; 3],
+    /// The direction from the spot light, negated: the cosine of a vertex's angle from the
+    /// spot's axis is its dot product with the direction to the light.
+    spot_axis_to_light: [f32; 3],
     spot_cos_cutoff: f32,
     spot_exponent: u32,
     /// (constant, linear, quadratic).
     attenuation_factors: [f32; 3],
+    /// Whether the attenuation's denominator can fall below 1/1024 (and so magnify errors):
+    /// not when k0 >= 1/1024 and k1, k2 >= 0.
+    checks_attenuation: bool,
     /// The largest ambient, diffuse and specular products of the light's colors with the
     /// faces' materials: what its terms weigh at most, per unit of n·L and (n·h)^s. The
     /// diffuse one is also by how much an error in n·L moves a color.
     term_bounds: [f32; 3],
-    /// Each face's largest specular product, times `HALF_VECTOR_ROUNDINGS`: how much an
-    /// error in n·h moves a color, per unit of the power's slope.
+    /// `term_bounds` times the spot exponent e: a spot factor's slope e·x^(e-1) is kept as
+    /// x^(e-1), and these bound its terms per unit of it.
+    spot_term_bounds: [f32; 3],
+    /// Each face's largest specular product, times `HALF_VECTOR_ROUNDINGS` and the face's
+    /// shininess s: how much an error in n·h moves a color, per unit of (n·h)^(s-1) (the
+    /// power's slope over s).
     specular_sensitivity: [f32; 2],
 }
 
@@ -263,12 +275,13 @@ impl FastLight {
             spot,
             attenuation: light.attenuation.is_some(),
             ambient: rgb(light.ambient),
+            has_ambient: light.ambient != DVec3::ZERO,
             diffuse: rgb(light.diffuse),
             specular: rgb(light.specular),
             position,
-            position_length: light.position.length() as f32,
+            conditioning: light.position.length() as f32 / ILL_CONDITIONED,
             infinite_half: rgb(light.infinite_half),
-            spot_direction: rgb(light.spot_direction),
+            spot_axis_to_light: rgb(-light.spot_direction),
             spot_cos_cutoff: light.spot_cos_cutoff.unwrap_or(-1.0) as f32,
             spot_exponent: if spot {
                 integer_exponent(light.spot_exponent)?
@@ -276,6 +289,9 @@ impl FastLight {
                 0
             },
             attenuation_factors: rgb(attenuation),
+            checks_attenuation: !(attenuation.x >= 1.0 / 1024.0
+                && attenuation.y >= 0.0
+                && attenuation.z >= 0.0),
             ..FastLight::default()
         };
         let largest =
@@ -293,11 +309,12 @@ impl FastLight {
                 fast.specular,
                 face.bound(MaterialMask::SPECULAR, face.specular),
             );
-            fast.specular_sensitivity[k] = HALF_VECTOR_ROUNDINGS * s;
+            fast.specular_sensitivity[k] = HALF_VECTOR_ROUNDINGS * s * face.shininess as f32;
             for (bound, value) in fast.term_bounds.iter_mut().zip([a, d, s]) {
                 *bound = bound.max(value);
             }
         }
+        fast.spot_term_bounds = fast.term_bounds.map(|b| b * fast.spot_exponent as f32);
         Some(fast)
     }
 }

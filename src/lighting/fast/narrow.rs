@@ -231,6 +231,12 @@ impl Mask {
         F(unsafe { _mm256_and_ps(self.0, value.0) })
     }
 
+    /// `a * b` where true, else 0.
+    #[inline(always)]
+    pub(super) fn keep_product(self, a: F, b: F) -> F {
+        F(unsafe { _mm256_and_ps(self.0, _mm256_mul_ps(a.0, b.0)) })
+    }
+
     /// One bit per lane of block `block` of the group.
     #[inline(always)]
     pub(super) fn block_bits(self, block: usize) -> u8 {
