@@ -314,3 +314,66 @@ fn through_the_safe_context_api() {
         ]
     );
 }
+
+/// Points drawn from arrays, some blocks of eight all inside the view volume (laid out in
+/// place in the application's buffer) and some not: the values of the safe API's feedback
+/// (kept by the library) for every type, nothing written past the count, and overflows cut
+/// at every length give the values that fit and -1.
+#[test]
+fn array_points_in_place_equal_kept_values_and_stop_at_the_count() {
+    let _ctx = fresh();
+    glViewport(0, 0, 100, 100);
+    // 37 points: blocks 0 and 2 all inside, block 1 with one outside, the last block (5
+    // points) ending with two outside.
+    let mut positions = Vec::new();
+    for i in 0..37 {
+        let outside = i == 11 || i >= 35;
+        let x = if outside { 2.0 } else { -0.9 + 0.05 * i as f32 };
+        positions.extend_from_slice(&[x, 0.01 * i as f32, -0.5]);
+    }
+    for kind in TYPES {
+        let mut kept = fflight::Context::new();
+        kept.viewport(0, 0, 100, 100).unwrap();
+        kept.feedback_buffer(1000, kind, 64).unwrap();
+        kept.render_mode(GL_FEEDBACK).unwrap();
+        kept.begin(GL_POINTS).unwrap();
+        for p in positions.chunks(3) {
+            kept.vertex(glam::Vec4::new(p[0], p[1], p[2], 1.0));
+        }
+        kept.end().unwrap();
+        let (count, finished) = kept.render_mode(GL_RENDER).unwrap();
+        let want = finished.unwrap().values;
+        assert_eq!(count as usize, want.len());
+
+        // SAFETY: `positions` outlives the draws below, which read its 37 points.
+        unsafe {
+            glVertexPointer(3, GL_FLOAT, 0, positions.as_ptr().cast());
+            glEnableClientState(GL_VERTEX_ARRAY);
+        }
+        // Room for whole blocks past the count, and every shorter size.
+        let room = want.len() + 8 * 13 + 1;
+        for size in std::iter::once(room).chain((0..=want.len() + 1).rev()) {
+            let mut buf = vec![SENTINEL_F; room + 16];
+            feedback_buffer(size as i32, kind, &mut buf);
+            glRenderMode(GL_FEEDBACK);
+            // SAFETY: the array holds the 37 points drawn.
+            unsafe { glDrawArrays(GL_POINTS, 0, 37) };
+            let got = glRenderMode(GL_RENDER);
+            let fits = size.min(want.len());
+            let expected = if size >= want.len() {
+                want.len() as i32
+            } else {
+                -1
+            };
+            assert_eq!(got, expected, "type {kind:#x}, size {size}");
+            assert_eq!(buf[..fits], want[..fits], "type {kind:#x}, size {size}");
+            assert!(
+                buf[fits..].iter().all(|&v| v == SENTINEL_F),
+                "type {kind:#x}, size {size}: written past the count"
+            );
+        }
+        // SAFETY: a valid enum; no array is read.
+        unsafe { glDisableClientState(GL_VERTEX_ARRAY) };
+    }
+    expect_no_error("array points");
+}

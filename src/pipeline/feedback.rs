@@ -66,7 +66,7 @@ pub(crate) fn encode_lane(
 fn encode_points<const Z: bool, const W: bool, const COLOR: bool, const TEXTURE: bool>(
     visible: &[bool; LANES],
     arrays: [&Lanes4; 3],
-    out: &mut [f32; LANES * MAX_POINT_VALUES],
+    out: &mut [f32],
 ) -> usize {
     // A constant, so that the copies below compile to the layout's moves.
     let per_point = 3 + Z as usize + W as usize + 4 * COLOR as usize + 4 * TEXTURE as usize;
@@ -100,12 +100,13 @@ pub struct FeedbackLayout {
 impl FeedbackLayout {
     /// Lays out the points of a block's `[window, color, tex_coord]` whose lanes are `visible`
     /// (GL_POINT_TOKEN, then each vertex's values) into `out`; returns how many values it
-    /// wrote.
+    /// wrote. `out` has room for a whole block's points (`point_values` each): past the
+    /// values of the visible points, it may be written over.
     pub(crate) fn encode_points(
         &self,
         visible: &[bool; LANES],
         arrays: [&Lanes4; 3],
-        out: &mut [f32; LANES * MAX_POINT_VALUES],
+        out: &mut [f32],
     ) -> usize {
         match (self.z, self.w, self.color, self.texture) {
             (false, ..) => encode_points::<false, false, false, false>(visible, arrays, out),
@@ -120,6 +121,14 @@ impl FeedbackLayout {
             }
             _ => encode_points::<true, true, true, true>(visible, arrays, out),
         }
+    }
+
+    /// How many values a fed-back point takes: its token and its vertex's values.
+    pub(crate) fn point_values(&self) -> usize {
+        3 + usize::from(self.z)
+            + usize::from(self.w)
+            + 4 * usize::from(self.color)
+            + 4 * usize::from(self.texture)
     }
 
     /// Writes `vertex`'s values in this layout to the start of `out`; returns how many.
@@ -502,8 +511,20 @@ impl FeedbackBuffer {
                 .for_each(|_| self.token(GL_POINT_TOKEN));
             return;
         };
+        let arrays = [window, color, tex_coord];
+        // A block whose every point is drawn fills exactly the room it is laid out in: in
+        // place in the application's memory when it fits.
+        let whole = LANES * layout.point_values();
+        if let FeedbackStorage::Application(memory) = &mut self.storage
+            && visible.iter().all(|&v| v)
+            && self.capacity - self.written >= whole
+        {
+            let room = &mut memory.as_mut_slice()[self.written..self.written + whole];
+            self.written += layout.encode_points(visible, arrays, room);
+            return;
+        }
         let mut values = [0.0; LANES * MAX_POINT_VALUES];
-        let len = layout.encode_points(visible, [window, color, tex_coord], &mut values);
+        let len = layout.encode_points(visible, arrays, &mut values);
         self.values_of(&values[..len]);
     }
 

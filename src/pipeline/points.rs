@@ -54,10 +54,8 @@ struct PointsDraw<'a> {
 }
 
 impl PointsDraw<'_> {
-    /// Chunk `chunk`'s points into `out`.
-    fn run(&self, chunk: usize, out: &mut ChunkPoints) {
-        out.values.clear();
-        out.hits = None;
+    /// Chunk `chunk`'s points, fetched and lit, to `keep` a block at a time.
+    fn run(&self, chunk: usize, mut keep: impl FnMut(&OutputBlock)) {
         let mut inputs = [self.template; LIT_BLOCKS];
         let mut outputs = [OutputBlock::default(); LIT_BLOCKS];
         let blocks = self.count.div_ceil(LANES);
@@ -72,34 +70,35 @@ impl PointsDraw<'_> {
             }
             let lit = &mut outputs[..batch_len];
             process_blocks(self.derived, Faces::Front, &inputs[..batch_len], lit);
-            for block in lit.iter() {
-                self.keep(block, out);
-            }
+            lit.iter().for_each(&mut keep);
         }
     }
 
-    /// A lit block's visible points into `out`.
-    fn keep(&self, block: &OutputBlock, out: &mut ChunkPoints) {
-        let (visible, window) = visible_points(&self.viewport, &self.planes, block);
-        match &self.layout {
-            Some(layout) => {
-                // Laid out in place: room for a whole block, then cut to what it wrote.
-                let at = out.values.len();
-                out.values.resize(at + LANES * MAX_POINT_VALUES, 0.0);
-                let room = (&mut out.values[at..]).try_into().expect("a block's room");
-                let arrays = [&window, &block.front_primary, &block.tex_coord];
-                let len = layout.encode_points(&visible, arrays, room);
-                out.values.truncate(at + len);
-            }
-            None => {
-                for lane in (0..LANES).filter(|&lane| visible[lane]) {
-                    let z = window[2][lane];
-                    let (min, max) = out.hits.get_or_insert((z, z));
-                    *min = min.min(z);
-                    *max = max.max(z);
+    /// Chunk `chunk`'s points into `out`, for the calling thread to append in turn.
+    fn run_into(&self, chunk: usize, out: &mut ChunkPoints) {
+        out.values.clear();
+        out.hits = None;
+        self.run(chunk, |block| {
+            let (visible, window) = visible_points(&self.viewport, &self.planes, block);
+            match &self.layout {
+                Some(layout) => {
+                    // Laid out in place: room for a whole block, then cut to what it wrote.
+                    let at = out.values.len();
+                    out.values.resize(at + LANES * MAX_POINT_VALUES, 0.0);
+                    let arrays = [&window, &block.front_primary, &block.tex_coord];
+                    let len = layout.encode_points(&visible, arrays, &mut out.values[at..]);
+                    out.values.truncate(at + len);
+                }
+                None => {
+                    for lane in (0..LANES).filter(|&lane| visible[lane]) {
+                        let z = window[2][lane];
+                        let (min, max) = out.hits.get_or_insert((z, z));
+                        *min = min.min(z);
+                        *max = max.max(z);
+                    }
                 }
             }
-        }
+        });
     }
 }
 
@@ -134,26 +133,35 @@ impl Context {
             layout,
         };
         let chunks = count.div_ceil(LANES * CHUNK_BLOCKS);
-        let mut own = ChunkPoints::default();
         in_order(
             chunks,
             threads - 1,
             ChunkPoints::default,
-            |k, out| draw.run(k, out),
-            |step| {
-                let out = match step {
-                    Step::Run(k) => {
-                        draw.run(k, &mut own);
-                        &own
+            |k, out| draw.run_into(k, out),
+            |step| match step {
+                // Every earlier chunk is appended: this one's points go straight in.
+                Step::Run(k) => draw.run(k, |block| {
+                    let (visible, window) = visible_points(&draw.viewport, &draw.planes, block);
+                    match layout {
+                        Some(_) => self.feedback.points(
+                            &visible,
+                            &window,
+                            &block.front_primary,
+                            &block.tex_coord,
+                        ),
+                        None => (0..LANES)
+                            .filter(|&lane| visible[lane])
+                            .for_each(|lane| self.selection.hit(window[2][lane])),
                     }
-                    Step::Take(out) => &*out,
-                };
-                if let Some((min, max)) = out.hits {
-                    self.selection.hit(min);
-                    self.selection.hit(max);
-                }
-                if layout.is_some() {
-                    self.feedback.values_of(&out.values);
+                }),
+                Step::Take(out) => {
+                    if let Some((min, max)) = out.hits {
+                        self.selection.hit(min);
+                        self.selection.hit(max);
+                    }
+                    if layout.is_some() {
+                        self.feedback.values_of(&out.values);
+                    }
                 }
             },
         );

@@ -89,6 +89,10 @@ unsafe extern "C" {
     pub fn glFeedbackBuffer(size: GLsizei, kind: GLenum, buffer: *mut GLfloat);
     pub safe fn glRenderMode(mode: GLenum) -> GLint;
     pub safe fn glPassThrough(token: GLfloat);
+    pub fn glVertexPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const c_void);
+    pub fn glEnableClientState(array: GLenum);
+    pub fn glDisableClientState(array: GLenum);
+    pub fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei);
 
     pub safe fn glEdgeFlag(flag: GLboolean);
     pub fn glEdgeFlagv(flag: *const GLboolean);
