@@ -317,12 +317,13 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
         for c in color.iter().chain(&secondary) {
             refused = refused | c.out_of_range();
         }
-        store4!(clamp4(color), outs, front_primary);
-        store4!(clamp4(secondary), outs, front_secondary);
-        for out in outs.iter_mut() {
-            out.back_primary = out.front_primary;
-            out.back_secondary = out.front_secondary;
-        }
+        // Each face's colors stored from registers: copying the front's blocks would load
+        // what was just stored in halves, which stalls.
+        let (primary, secondary) = (clamp4(color), clamp4(secondary));
+        store4!(primary, outs, front_primary);
+        store4!(secondary, outs, front_secondary);
+        store4!(primary, outs, back_primary);
+        store4!(secondary, outs, back_secondary);
         return refused;
     }
     if state.tracks_color {
@@ -411,10 +412,12 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
         let mut lowest = F::splat(f32::INFINITY);
         let (primary, secondary) =
             face_colors(state, face, &sums, &color, &mut refused, &mut lowest);
+        // One-sided, the back's colors are the front's, stored from registers too.
         if face == 0 {
             store4!(primary, outs, front_primary);
             store4!(secondary, outs, front_secondary);
-        } else {
+        }
+        if face == 1 || !TWO_SIDE {
             store4!(primary, outs, back_primary);
             store4!(secondary, outs, back_secondary);
         }
@@ -422,12 +425,6 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
         let error = sensitivity * normal_scale * F::splat(DOT_ERROR);
         let saturated = lowest.gt(F::splat(1.0) + error);
         refused = refused | (error.exceeds(F::splat(ERROR_BUDGET)) & !saturated);
-    }
-    if !TWO_SIDE {
-        for out in outs.iter_mut() {
-            out.back_primary = out.front_primary;
-            out.back_secondary = out.front_secondary;
-        }
     }
     refused
 }
