@@ -1179,8 +1179,7 @@ impl Context {
             if threads > 1 {
                 let fill = |block: usize, input: &mut InputBlock| {
                     let start = first + block * LANES;
-                    let indices: [usize; LANES] = std::array::from_fn(|lane| start + lane);
-                    fetch.fill(input, &indices[..LANES.min(first + count - start)]);
+                    fetch.fill_run(input, start, LANES.min(first + count - start));
                 };
                 let blocks = count.div_ceil(LANES);
                 let faces = stream.faces();

@@ -2,8 +2,12 @@
 //! size and kind (normalized or not), that decodes a block of elements at a time into the
 //! lanes of an `InputBlock`. No per-element dispatch on the type.
 
+use std::ops::Range;
+
+use glam::Mat4;
+
 use crate::gl::*;
-use crate::lighting::lanes::LanesF32;
+use crate::lighting::lanes::{LANES, LanesF32};
 use crate::pipeline::block::InputBlock;
 use crate::state::arrays::{ALL_KINDS, ARRAY_KINDS, ArrayKind, ClientArray};
 use crate::state::convert::Component;
@@ -92,6 +96,30 @@ struct ArraySource<'a> {
     bytes: &'a [u8],
     stride: usize,
     convert: Converter,
+    /// Its size when its elements are 2 to 4 floats: a run of them is read 16 bytes an
+    /// element and transposed (`read_transposed`).
+    floats: Option<usize>,
+}
+
+/// A full block's elements, `stride` bytes apart in `run`, each read as 16 bytes (its floats
+/// and what follows them), into the components `lanes`: 4 lanes at a time, a 4 x 4
+/// transposition, which glam does in a few shuffles on SSE2 and NEON.
+#[inline(always)]
+fn read_transposed(run: &[u8], stride: usize, lanes: &mut [LanesF32]) {
+    for half in 0..LANES / 4 {
+        let elements = Mat4::from_cols_array_2d(&std::array::from_fn(|k| {
+            let element: &[u8; 16] = run[(4 * half + k) * stride..][..16]
+                .try_into()
+                .expect("16 bytes");
+            std::array::from_fn(|c| {
+                f32::from_ne_bytes(element[4 * c..][..4].try_into().expect("4 bytes"))
+            })
+        }))
+        .transpose();
+        for (c, component) in lanes.iter_mut().enumerate() {
+            component[4 * half..][..4].copy_from_slice(&elements.col(c).to_array());
+        }
+    }
 }
 
 /// The enabled arrays of a draw, ready to fill blocks.
@@ -138,6 +166,8 @@ impl<'a> ArrayFetch<'a> {
                 bytes,
                 stride: array.effective_stride(),
                 convert: converter(array, ALL_KINDS[k].normalized()),
+                floats: (array.component_type == GL_FLOAT && (2..=4).contains(&array.size))
+                    .then_some(array.size as usize),
             })
         });
         ArrayFetch { base, arrays }
@@ -178,9 +208,76 @@ impl<'a> ArrayFetch<'a> {
     /// assert_eq!(lanes4_get(&block.color, 0), Vec4::ONE); // no color array: kept
     /// ```
     pub fn fill(&self, block: &mut InputBlock, indices: &[usize]) {
-        let mut offsets = [0; crate::lighting::lanes::LANES];
-        block.len = indices.len();
-        let mut edge_flags = [[0.0; crate::lighting::lanes::LANES]; 1];
+        if let [first, ..] = *indices
+            && indices.len() == LANES
+            && indices.windows(2).all(|pair| pair[1] == pair[0] + 1)
+        {
+            return self.fill_run(block, first, LANES);
+        }
+        self.fill_with(block, indices.len(), |source, offsets| {
+            for (offset, &index) in offsets.iter_mut().zip(indices) {
+                *offset = (index - self.base) * source.stride;
+            }
+            None
+        });
+    }
+
+    /// `fill` with elements `first..first + len` (at most a block's lanes): a full block of
+    /// an array of floats is read as one run and transposed.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// # use fflight::{gl::*, pipeline::fetch::ArrayFetch};
+    /// # use fflight::state::arrays::{ARRAY_KINDS, ClientArray};
+    /// # use fflight::pipeline::block::{InputBlock, lanes4_get};
+    /// # use glam::Vec4;
+    /// let vertex_array = ClientArray {
+    ///     enabled: true,
+    ///     size: 3,
+    ///     component_type: GL_FLOAT,
+    ///     stride: 0,
+    ///     address: 0,
+    ///     buffer: 0,
+    /// };
+    /// let bytes: Vec<u8> = (0..30).flat_map(|v| (v as f32).to_ne_bytes()).collect();
+    /// let mut arrays = [None; ARRAY_KINDS];
+    /// arrays[0] = Some((&vertex_array, &bytes[..]));
+    /// let fetch = ArrayFetch::new(0, arrays);
+    /// let mut block = InputBlock::default();
+    /// fetch.fill_run(&mut block, 1, 8); // elements 1 to 8
+    /// assert_eq!(lanes4_get(&block.position, 7), Vec4::new(24.0, 25.0, 26.0, 1.0));
+    /// ```
+    pub fn fill_run(&self, block: &mut InputBlock, first: usize, len: usize) {
+        self.fill_with(block, len, |source, offsets| {
+            let start = (first - self.base) * source.stride;
+            // Each element is read as 16 bytes: the last's must be in the array.
+            let end = start + (LANES - 1) * source.stride + 16;
+            if let Some(size) = source.floats
+                && len == LANES
+                && source.bytes.len() >= end
+            {
+                return Some((start..end, size));
+            }
+            for (lane, offset) in offsets.iter_mut().enumerate() {
+                *offset = start + lane * source.stride;
+            }
+            None
+        });
+    }
+
+    /// The arrays' elements into `block`'s `len` lanes: `locate(source, offsets)` gives the
+    /// bytes of a full block's run of floats and their count, or sets the elements' offsets.
+    #[inline(always)]
+    fn fill_with(
+        &self,
+        block: &mut InputBlock,
+        len: usize,
+        locate: impl Fn(&ArraySource, &mut [usize; LANES]) -> Option<(Range<usize>, usize)>,
+    ) {
+        let mut offsets = [0; LANES];
+        block.len = len;
+        let mut edge_flags = [[0.0; LANES]; 1];
         for (kind, source) in ALL_KINDS.into_iter().zip(&self.arrays) {
             let Some(source) = source else { continue };
             let out: &mut [LanesF32] = match kind {
@@ -193,14 +290,77 @@ impl<'a> ArrayFetch<'a> {
                 // Fog coordinates and color indices reach nothing an RGBA vertex computes.
                 ArrayKind::FogCoord | ArrayKind::Index => continue,
             };
-            for (offset, &index) in offsets.iter_mut().zip(indices) {
-                *offset = (index - self.base) * source.stride;
+            match locate(source, &mut offsets) {
+                Some((run, size)) => {
+                    let (read, padded) = out.split_at_mut(size.min(out.len()));
+                    read_transposed(&source.bytes[run], source.stride, read);
+                    // Missing components are (z, w) = (0, 1) (§2.8).
+                    for (c, component) in padded.iter_mut().enumerate() {
+                        *component = [if size + c == 3 { 1.0 } else { 0.0 }; LANES];
+                    }
+                }
+                None => (source.convert)(source.bytes, &offsets[..len], out),
             }
-            let offsets = &offsets[..indices.len()];
-            (source.convert)(source.bytes, offsets, out);
             if kind == ArrayKind::EdgeFlag {
                 for (flag, value) in block.edge_flag.iter_mut().zip(edge_flags[0]) {
                     *flag = value != 0.0;
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every float array layout a full block can be read as one run from (sizes 2 to 4 of
+    /// each kind, packed, padded and unaligned strides, the bytes ending with the last
+    /// element) gives the lanes reading the elements one by one gives, to the bit, and a
+    /// block whose indices are not consecutive is read element by element.
+    #[test]
+    fn runs_of_floats_equal_elements_one_by_one() {
+        let kinds = [(0, 2..=4), (1, 3..=3), (2, 3..=4), (3, 2..=4), (5, 3..=3)];
+        for (kind, sizes) in kinds {
+            for size in sizes {
+                for (stride, skew) in [(0, 0), (4 * size + 8, 0), (4 * size, 1), (4 * size + 4, 3)]
+                {
+                    let array = ClientArray {
+                        enabled: true,
+                        size,
+                        component_type: GL_FLOAT,
+                        stride,
+                        address: 0,
+                        buffer: 0,
+                    };
+                    let stride = array.effective_stride();
+                    let elements = 19;
+                    // The last element ends the bytes: a 16-byte read past it would panic.
+                    let len = skew + (elements - 1) * stride + 4 * size as usize;
+                    let bytes: Vec<u8> = (0..len).map(|k| (k * 7 % 251) as u8 ^ 0x40).collect();
+                    let mut arrays = [None; ARRAY_KINDS];
+                    arrays[kind] = Some((&array, &bytes[skew..]));
+                    let fetch = ArrayFetch::new(3, arrays);
+                    for first in 3..3 + elements - LANES + 1 {
+                        let mut run = InputBlock::default();
+                        fetch.fill_run(&mut run, first, LANES);
+                        let mut contiguous = InputBlock::default();
+                        let indices: [usize; LANES] = std::array::from_fn(|k| first + k);
+                        fetch.fill(&mut contiguous, &indices);
+                        let mut one_by_one = InputBlock::default();
+                        for k in 0..LANES {
+                            let mut single = InputBlock::default();
+                            fetch.fill(&mut single, &[first + k]);
+                            one_by_one.push(single.vertex(0).0, &single.vertex(0).1);
+                        }
+                        let bits = |b: &InputBlock| {
+                            format!("{:?}", (0..LANES).map(|k| b.vertex(k)).collect::<Vec<_>>())
+                        };
+                        let what =
+                            format!("kind {kind}, size {size}, stride {stride}, first {first}");
+                        assert_eq!(bits(&run), bits(&one_by_one), "{what}");
+                        assert_eq!(bits(&contiguous), bits(&one_by_one), "{what}");
+                    }
                 }
             }
         }

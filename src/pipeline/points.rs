@@ -64,9 +64,8 @@ impl PointsDraw<'_> {
             let batch_len = LIT_BLOCKS.min(chunk_end - batch);
             for (k, input) in inputs[..batch_len].iter_mut().enumerate() {
                 let start = self.first + (batch + k) * LANES;
-                let indices: [usize; LANES] = std::array::from_fn(|lane| start + lane);
                 let len = LANES.min(self.first + self.count - start);
-                self.fetch.fill(input, &indices[..len]);
+                self.fetch.fill_run(input, start, len);
             }
             let lit = &mut outputs[..batch_len];
             process_blocks(self.derived, Faces::Front, &inputs[..batch_len], lit);
