@@ -1,6 +1,7 @@
-//! How many threads large draws and bulk calls may use: `fflSetThreads` / [`set_threads`],
-//! else the environment variable `FFLIGHT_THREADS`, else the number of cores. Process-wide,
-//! like the pool that runs the work.
+//! How many threads large draws and bulk calls may use (and whether immediate mode's helper
+//! thread lights its batches: with more than one): `fflSetThreads` / [`set_threads`], else
+//! the environment variable `FFLIGHT_THREADS`, else the number of cores. Process-wide, like
+//! the pool that runs the work.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 
