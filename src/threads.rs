@@ -1,6 +1,7 @@
-//! How many threads large draws and bulk calls may use: `fflSetThreads` / [`set_threads`],
-//! else the environment variable `FFLIGHT_THREADS`, else the number of cores. Process-wide,
-//! like the pool that runs the work.
+//! How many threads large draws and bulk calls may use (and whether immediate mode's helper
+//! thread lights its batches: with more than one): `fflSetThreads` / [`set_threads`], else
+//! the environment variable `FFLIGHT_THREADS`, else the number of cores. Process-wide, like
+//! the pool that runs the work.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -47,25 +48,6 @@ pub fn thread_count() -> usize {
     }
 }
 
-/// The thread count the application asked for (`set_threads`, else `FFLIGHT_THREADS`), if
-/// it asked: immediate mode's helper thread runs only then (see `commands::vertex`).
-///
-/// # Examples
-///
-/// ```
-/// use fflight::threads::{asked_thread_count, set_threads};
-/// set_threads(3)?;
-/// assert_eq!(asked_thread_count(), Some(3));
-/// set_threads(0)?;
-/// # Ok::<(), fflight::GlError>(())
-/// ```
-pub fn asked_thread_count() -> Option<usize> {
-    match REQUESTED.load(Ordering::Relaxed) {
-        0 => env_thread_count(),
-        n => Some(n),
-    }
-}
-
 /// Below this many vertices per thread, work runs on fewer threads.
 pub const MIN_VERTICES_PER_THREAD: usize = 16 * 1024;
 
@@ -86,9 +68,14 @@ pub fn threads_for(vertices: usize) -> usize {
 
 /// `FFLIGHT_THREADS` when it holds a positive number, else the number of cores.
 fn default_thread_count() -> usize {
-    env_thread_count()
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
-        .min(MAX_THREADS)
+    env_thread_count().unwrap_or_else(cores).min(MAX_THREADS)
+}
+
+/// The number of cores, read once: immediate mode asks for every batch, and reading it
+/// (the affinity mask, the cgroup's quota files) takes microseconds.
+fn cores() -> usize {
+    static CORES: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
 }
 
 /// `FFLIGHT_THREADS` when it holds a positive number.

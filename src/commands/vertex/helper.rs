@@ -1,90 +1,145 @@
-//! One helper thread for immediate mode, when the application asks for more than one thread
-//! (`Context::batch_full` says why not by default): it lights a full batch of glVertex blocks while the
-//! application's thread goes on filling the next, which then collects the lit batch and feeds
-//! it back (or selects or captures it) before its own, so the order is the one thread's.
+//! One helper thread for immediate mode, when more than one thread is in use
+//! (`Context::batch_full`): it lights a full batch of glVertex blocks while the application's
+//! thread streams the batch before it and fills the next. The application's thread collects
+//! each batch in order, one chunk of 16 blocks after another: a chunk the helper has lit is
+//! streamed as it is, a chunk it has not begun is lit there and then by the application's
+//! thread (the helper takes the chunks from the last, so the two meet in the middle of a
+//! batch that neither could light alone in time), a chunk it is lighting is waited for.
+//! Either way the same function lights the same blocks, so results do not depend on which
+//! thread did it, nor on the thread count, and the order of the feedback is the one thread's.
 //! Only a primitive's batches are in flight, only between its glBegin and glEnd: glEnd and
 //! glMaterial (the one command between them that changes how vertices are lit) collect
 //! first, so nothing is in flight when any other command runs.
 //!
-//! A batch is offered, not handed over: if the helper has not started it by the time the
-//! application's thread collects it (the helper busy with another context's batch, or not
-//! scheduled on a busy machine), the application's thread lights it itself. Either way the
-//! same function lights the same blocks, so results do not depend on which thread did it,
-//! nor on the thread count. A helper that did not start in time, or made the application's
-//! thread wait long, is not offered the next batches, for longer each time it happens again
-//! (up to 256 batches), so a machine with more work than cores sees one thread's speed.
+//! Nothing waits on the helper for long: the inputs of a batch are shared, not handed over,
+//! so a chunk the helper began and did not finish in `LONG_WAIT` (it was descheduled) is lit
+//! again by the application's thread; the helper's late result is thrown away. A helper that
+//! did not help with a batch, or kept the application's thread waiting, is not offered the
+//! next batches, for longer each time it happens again (up to 256 batches), so a machine
+//! with more work than cores sees one thread's speed. Between batches the helper watches
+//! for the next for `SPIN`, then sleeps until one is offered.
 
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{Arc, Condvar, Mutex, MutexGuard, OnceLock};
+use std::collections::VecDeque;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
+use std::thread::Thread;
 use std::time::{Duration, Instant};
 
 use super::{HALF_BLOCKS, HalfBlocks, half_blocks};
 use crate::lighting::batch::{Faces, process_blocks};
-use crate::pipeline::block::OutputBlock;
+use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::pipeline::vertex::DerivedState;
 
-/// Where an offered batch stands.
+/// Blocks per chunk, what a thread lights at a time: the batch engine's own group of blocks.
+pub(crate) const CHUNK_BLOCKS: usize = 16;
+
+/// Chunks per batch.
+const CHUNKS: usize = 2 * HALF_BLOCKS / CHUNK_BLOCKS;
+
+/// How many batches of a context may be offered at once: the one the helper lights while
+/// the application's thread streams the one before.
+pub(crate) const RING: usize = 2;
+
+/// Where a chunk of a batch stands, in its state's two low bits (the batch's number above).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u64)]
 enum Phase {
-    /// Nothing offered.
-    Idle,
-    /// Offered, not lit yet: whoever locks the job first lights it.
+    /// Not begun: whoever claims it first lights it.
     Offered,
-    /// Lit: `outputs` hold the result.
+    /// The helper lights it.
+    Helper,
+    /// The application's thread lights it (or has).
+    Application,
+    /// The helper lit it: the chunk's outputs hold it.
     Lit,
 }
 
-/// A batch and its lit blocks, behind the job's lock. Whoever lights it holds the lock
-/// throughout, so the offering thread waits for the helper by taking the lock.
-#[derive(Debug)]
-pub(crate) struct Batch {
-    phase: Phase,
-    derived: Option<Arc<DerivedState>>,
-    /// The faces whose colors the primitive reads.
-    faces: Faces,
-    /// The blocks to light (swapped with the pending blocks', so nothing is copied).
-    inputs: [HalfBlocks; 2],
-    outputs: Vec<OutputBlock>,
+/// A chunk's state: batch `seq`, in `phase`.
+fn state(seq: u64, phase: Phase) -> u64 {
+    seq << 2 | phase as u64
 }
 
-impl Batch {
-    /// The lit blocks.
-    pub(crate) fn outputs(&self) -> &[OutputBlock] {
-        &self.outputs
+fn lock<T>(mutex: &Mutex<T>) -> MutexGuard<'_, T> {
+    mutex.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// A full batch, offered: read by both threads, written by neither.
+#[derive(Debug)]
+pub(crate) struct Offer {
+    /// The batch's number in its job, from 1.
+    seq: u64,
+    derived: Arc<DerivedState>,
+    /// The faces whose colors the primitive reads.
+    faces: Faces,
+    inputs: [HalfBlocks; 2],
+}
+
+impl Offer {
+    /// Lights chunk `index` into `outputs`.
+    fn light(&self, index: usize, outputs: &mut [OutputBlock]) {
+        let first = index * CHUNK_BLOCKS;
+        let inputs: &[InputBlock] =
+            &self.inputs[first / HALF_BLOCKS][first % HALF_BLOCKS..][..CHUNK_BLOCKS];
+        process_blocks(&self.derived, self.faces, inputs, outputs);
     }
 }
 
-/// One context's offered batch; kept with its pending blocks and reused for every batch.
+/// A chunk of a batch: who lights it, and what the helper lit.
+#[derive(Debug)]
+struct Chunk {
+    state: AtomicU64,
+    outputs: Mutex<Box<[OutputBlock; CHUNK_BLOCKS]>>,
+}
+
+/// Room for one batch in flight.
+#[derive(Debug)]
+struct Slot {
+    /// The batch, while in flight.
+    offer: Mutex<Option<Arc<Offer>>>,
+    chunks: [Chunk; CHUNKS],
+}
+
+/// One context's batches in flight; kept with its pending blocks and reused.
 #[derive(Debug)]
 pub(crate) struct Job {
-    batch: Mutex<Batch>,
+    /// Batch `seq` is in slot `seq % RING`.
+    slots: [Slot; RING],
+    /// The number of the last batch offered (0: none yet).
+    offered: AtomicU64,
+    /// The number of the last batch the helper has looked at (written by the helper only).
+    looked_at: AtomicU64,
+    /// Whether the job is in the helper's mailbox.
+    queued: AtomicBool,
 }
 
 impl Job {
-    /// A job with room for a batch.
+    /// A job with room for `RING` batches.
     pub(crate) fn new() -> Arc<Job> {
         Arc::new(Job {
-            batch: Mutex::new(Batch {
-                phase: Phase::Idle,
-                derived: None,
-                faces: Faces::Both,
-                inputs: [half_blocks(), half_blocks()],
-                outputs: vec![OutputBlock::default(); 2 * HALF_BLOCKS],
+            slots: std::array::from_fn(|_| Slot {
+                offer: Mutex::new(None),
+                chunks: std::array::from_fn(|_| Chunk {
+                    state: AtomicU64::new(state(0, Phase::Application)),
+                    outputs: Mutex::new(Box::new([OutputBlock::default(); CHUNK_BLOCKS])),
+                }),
             }),
+            offered: AtomicU64::new(0),
+            looked_at: AtomicU64::new(0),
+            queued: AtomicBool::new(false),
         })
     }
 
-    fn lock(&self) -> MutexGuard<'_, Batch> {
-        self.batch.lock().unwrap_or_else(|e| e.into_inner())
+    fn slot(&self, seq: u64) -> &Slot {
+        &self.slots[(seq % RING as u64) as usize]
     }
 }
 
 /// The application thread's side of a context's job: when to offer the helper a batch.
 #[derive(Debug, Default)]
 pub(crate) struct Offers {
-    /// Batches still to light alone, after the helper kept this thread waiting.
+    /// Batches still to light alone, after the helper did not help.
     skip: u32,
-    /// How many batches the next wait costs the helper (0, then 1, 2, 4, ... 256).
+    /// How many batches the next failure costs the helper (0, then 1, 2, 4, ... 256).
     penalty: u32,
 }
 
@@ -98,7 +153,7 @@ impl Offers {
         true
     }
 
-    /// Whether the helper lit the last batch in time.
+    /// Whether the helper helped with the last batch in time.
     fn helped(&mut self, in_time: bool) {
         if in_time {
             self.penalty /= 2;
@@ -110,96 +165,144 @@ impl Offers {
 }
 
 /// Offers `inputs` (every block full) to the helper thread, to light with `derived` for the
-/// colors of `faces`; `inputs`
-/// gets the job's previous blocks in exchange (to fill again). `false` when there is no helper
-/// (it could not be started): nothing is offered and `inputs` is unchanged.
+/// colors of `faces`; `inputs` gets `spare` (or new blocks) in exchange, to fill again. The
+/// job's batches offered before and not collected must be fewer than `RING`. `None` when
+/// there is no helper (it could not be started): nothing is offered, `inputs` is unchanged.
 pub(crate) fn offer(
     job: &Arc<Job>,
     derived: &Arc<DerivedState>,
     faces: Faces,
     inputs: &mut [HalfBlocks; 2],
-) -> bool {
-    let Some(helper) = helper() else {
-        return false;
-    };
-    {
-        let mut batch = job.lock();
-        std::mem::swap(&mut batch.inputs, inputs);
-        batch.derived = Some(derived.clone());
-        batch.faces = faces;
-        batch.phase = Phase::Offered;
+    spare: Option<[HalfBlocks; 2]>,
+) -> Option<Arc<Offer>> {
+    let helper = helper()?;
+    let fresh = spare.unwrap_or_else(|| [half_blocks(), half_blocks()]);
+    let offer = publish(job, derived, faces, std::mem::replace(inputs, fresh));
+    if !job.queued.swap(true, Ordering::SeqCst) {
+        let mut mailbox = lock(&helper.mailbox);
+        mailbox.push_back(job.clone());
+        helper.mail.store(true, Ordering::Release);
     }
-    let mut queue = helper.queue.lock().unwrap_or_else(|e| e.into_inner());
-    // One job waits at a time; another context's job there means the helper has work, and
-    // this batch will be lit by its own thread when it collects it.
-    if queue.is_none() {
-        *queue = Some(job.clone());
-        helper.queued.store(true, Ordering::Release);
-        if helper.sleeping.load(Ordering::Relaxed) {
-            helper.wake.notify_one();
-        }
-    }
-    true
+    // Costs a system call only when the helper sleeps.
+    helper.thread.unpark();
+    Some(offer)
 }
 
-/// Longer than this waiting for the helper to finish a batch it began, and it is not offered
-/// the next (it was descheduled: lighting a batch takes tens of microseconds).
-const LONG_WAIT: Duration = Duration::from_micros(200);
-
-/// The offered batch, lit: by the helper (waiting for it to finish if it has begun), or here
-/// if it has not begun.
-pub(crate) fn collect<'a>(job: &'a Job, offers: &mut Offers) -> MutexGuard<'a, Batch> {
-    let mut batch = match job.batch.try_lock() {
-        Ok(batch) => batch,
-        Err(std::sync::TryLockError::Poisoned(e)) => e.into_inner(),
-        Err(std::sync::TryLockError::WouldBlock) => {
-            // The helper is lighting it.
-            let waiting = Instant::now();
-            let batch = job.lock();
-            offers.helped(waiting.elapsed() < LONG_WAIT);
-            batch
-        }
-    };
-    if batch.phase == Phase::Offered {
-        offers.helped(false);
-        light(&mut batch);
-    } else {
-        offers.helped(true);
-    }
-    batch.phase = Phase::Idle;
-    batch.derived = None;
-    batch
-}
-
-fn light(batch: &mut Batch) {
-    let Batch {
-        derived,
+/// Makes `inputs` the job's next batch, every chunk offered.
+fn publish(
+    job: &Job,
+    derived: &Arc<DerivedState>,
+    faces: Faces,
+    inputs: [HalfBlocks; 2],
+) -> Arc<Offer> {
+    let seq = job.offered.load(Ordering::Relaxed) + 1;
+    let offer = Arc::new(Offer {
+        seq,
+        derived: derived.clone(),
         faces,
         inputs,
-        outputs,
-        phase,
-    } = batch;
-    if let Some(derived) = derived {
-        let (first, second) = outputs.split_at_mut(HALF_BLOCKS);
-        process_blocks(derived, *faces, &inputs[0][..], first);
-        process_blocks(derived, *faces, &inputs[1][..], second);
+    });
+    let slot = job.slot(seq);
+    for chunk in &slot.chunks {
+        chunk
+            .state
+            .store(state(seq, Phase::Offered), Ordering::Relaxed);
     }
-    *phase = Phase::Lit;
+    *lock(&slot.offer) = Some(offer.clone());
+    job.offered.store(seq, Ordering::SeqCst);
+    offer
+}
+
+/// Longer than this waiting for the helper to finish a chunk it began, and the application's
+/// thread lights it itself (the helper was descheduled: a chunk takes a few microseconds).
+const LONG_WAIT: Duration = Duration::from_micros(50);
+
+/// Streams the blocks of `offer`, a batch of `job`, in order through `stream`: those the
+/// helper lit, the others lit here in `scratch` (room for a chunk). Returns the batch's
+/// input blocks, to fill again, unless the helper still holds them.
+pub(crate) fn collect(
+    job: &Job,
+    offer: Arc<Offer>,
+    offers: &mut Offers,
+    scratch: &mut [OutputBlock],
+    mut stream: impl FnMut(&OutputBlock),
+) -> Option<[HalfBlocks; 2]> {
+    let slot = job.slot(offer.seq);
+    let mut lit_by_helper = 0;
+    let mut in_time = true;
+    for (index, chunk) in slot.chunks.iter().enumerate() {
+        match claim(chunk, offer.seq) {
+            Claim::Lit => {
+                lit_by_helper += 1;
+                lock(&chunk.outputs).iter().for_each(&mut stream);
+            }
+            Claim::Here { late } => {
+                in_time &= !late;
+                let outputs = &mut scratch[..CHUNK_BLOCKS];
+                offer.light(index, outputs);
+                outputs.iter().for_each(&mut stream);
+            }
+        }
+    }
+    offers.helped(in_time && lit_by_helper > 0);
+    {
+        let mut held = lock(&slot.offer);
+        if held.as_ref().is_some_and(|held| held.seq == offer.seq) {
+            *held = None;
+        }
+    }
+    Arc::try_unwrap(offer).ok().map(|offer| offer.inputs)
+}
+
+/// Who lights a chunk, as the application's thread collects it.
+enum Claim {
+    /// The helper lit it.
+    Lit,
+    /// The application's thread: the helper had not begun it, or was `late` with it.
+    Here { late: bool },
+}
+
+fn claim(chunk: &Chunk, seq: u64) -> Claim {
+    let mut waiting: Option<Instant> = None;
+    let mut late = false;
+    loop {
+        let now = chunk.state.load(Ordering::Acquire);
+        if now == state(seq, Phase::Lit) {
+            return Claim::Lit;
+        }
+        if now != state(seq, Phase::Helper) || late {
+            let mine = state(seq, Phase::Application);
+            if chunk
+                .state
+                .compare_exchange(now, mine, Ordering::Acquire, Ordering::Acquire)
+                .is_ok()
+            {
+                return Claim::Here { late };
+            }
+            continue;
+        }
+        // The helper is lighting it: wait, yielding (the helper may be waiting for this
+        // core).
+        std::thread::yield_now();
+        late = waiting.get_or_insert_with(Instant::now).elapsed() > LONG_WAIT;
+    }
 }
 
 /// The helper thread's mailbox.
 struct Helper {
-    queue: Mutex<Option<Arc<Job>>>,
-    /// Whether `queue` holds a job: what the helper watches while it spins.
-    queued: AtomicBool,
-    /// Whether the helper sleeps on `wake` (set and read under `queue`'s lock).
-    sleeping: AtomicBool,
-    wake: Condvar,
+    /// Jobs with batches offered.
+    mailbox: Mutex<VecDeque<Arc<Job>>>,
+    /// Whether `mailbox` holds a job: what the helper watches while it spins.
+    mail: AtomicBool,
+    thread: Thread,
 }
 
-/// How long the helper watches for the next batch before it sleeps: the next batch of a
-/// primitive comes within this, and waking a sleeping thread costs the offering thread a
-/// system call and the helper tens of microseconds (by then the batch may be collected).
+/// How long the helper watches for the next batch before it sleeps: a primitive's next batch
+/// comes within this, and waking a sleeping thread costs the offering thread a system call
+/// and the helper tens of microseconds. It watches yielding: where more threads are runnable
+/// than cores, a thread spinning without yielding takes its share of a core from the others,
+/// the application's thread among them (immediate 8 spots, 2 cores busy with two other
+/// processes: 84-94 ns/vertex spinning, 61-68 yielding, 59-76 with one thread).
 const SPIN: Duration = Duration::from_micros(100);
 
 /// The helper, started on first use and kept for the life of the process; `None` if the
@@ -212,43 +315,166 @@ fn helper() -> Option<&'static Helper> {
                 .name("fflight-immediate".into())
                 .spawn(run)
                 .ok()
-                .map(|_| Helper {
-                    queue: Mutex::new(None),
-                    queued: AtomicBool::new(false),
-                    sleeping: AtomicBool::new(false),
-                    wake: Condvar::new(),
+                .map(|handle| Helper {
+                    mailbox: Mutex::new(VecDeque::new()),
+                    mail: AtomicBool::new(false),
+                    thread: handle.thread().clone(),
                 })
         })
         .as_ref()
 }
 
-/// The helper thread: lights each offered batch it finds still offered.
+/// The helper thread: lights the chunks of each offered batch, from the last, that the
+/// application's thread has not claimed.
 fn run() {
     let Some(helper) = helper() else {
         return;
     };
+    let mut scratch = Box::new([OutputBlock::default(); CHUNK_BLOCKS]);
     loop {
-        let spinning = Instant::now();
-        while !helper.queued.load(Ordering::Acquire) && spinning.elapsed() < SPIN {
-            std::hint::spin_loop();
-        }
-        let job = {
-            let mut queue = helper.queue.lock().unwrap_or_else(|e| e.into_inner());
-            loop {
-                if let Some(job) = queue.take() {
-                    helper.queued.store(false, Ordering::Relaxed);
-                    break job;
-                }
-                helper.sleeping.store(true, Ordering::Relaxed);
-                queue = helper.wake.wait(queue).unwrap_or_else(|e| e.into_inner());
-                helper.sleeping.store(false, Ordering::Relaxed);
+        let job = next_job(helper);
+        job.queued.store(false, Ordering::SeqCst);
+        loop {
+            let offered = job.offered.load(Ordering::SeqCst);
+            // Batches older than the ring's are collected already.
+            let seq = (job.looked_at.load(Ordering::Relaxed) + 1)
+                .max(offered.saturating_sub(RING as u64 - 1));
+            if seq > offered {
+                break;
             }
-        };
-        let mut batch = job.lock();
-        if batch.phase == Phase::Offered {
-            // A panic leaves the batch offered: the offering thread lights it and meets the
-            // panic under its own guard.
-            let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| light(&mut batch)));
+            job.looked_at.store(seq, Ordering::Relaxed);
+            let offer = lock(&job.slot(seq).offer).clone();
+            if let Some(offer) = offer.filter(|offer| offer.seq == seq) {
+                // A panic leaves the chunk to the application's thread, which lights it (late)
+                // and meets the panic under its own guard.
+                let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                    light_chunks(&job, &offer, &mut scratch)
+                }));
+            }
         }
+    }
+}
+
+/// Lights the chunks of `offer` the application's thread has not claimed, from the last.
+fn light_chunks(job: &Job, offer: &Offer, scratch: &mut Box<[OutputBlock; CHUNK_BLOCKS]>) {
+    let seq = offer.seq;
+    for (index, chunk) in job.slot(seq).chunks.iter().enumerate().rev() {
+        let claimed = chunk.state.compare_exchange(
+            state(seq, Phase::Offered),
+            state(seq, Phase::Helper),
+            Ordering::Acquire,
+            Ordering::Relaxed,
+        );
+        if claimed.is_err() {
+            // The application's thread claims them in order: those before are its too.
+            return;
+        }
+        offer.light(index, &mut scratch[..]);
+        std::mem::swap(&mut *lock(&chunk.outputs), scratch);
+        // Fails if the application's thread tired of waiting and lit it too: it streams its
+        // own, and the chunk's outputs (now ours) are not read.
+        let _ = chunk.state.compare_exchange(
+            state(seq, Phase::Helper),
+            state(seq, Phase::Lit),
+            Ordering::Release,
+            Ordering::Relaxed,
+        );
+    }
+}
+
+/// Waits for a job in the mailbox: watching it for `SPIN`, then asleep until `offer` wakes
+/// the thread.
+fn next_job(helper: &Helper) -> Arc<Job> {
+    let mut spinning = Instant::now();
+    loop {
+        if helper.mail.load(Ordering::Acquire) {
+            let mut mailbox = lock(&helper.mailbox);
+            let job = mailbox.pop_front();
+            helper.mail.store(!mailbox.is_empty(), Ordering::Relaxed);
+            if let Some(job) = job {
+                return job;
+            }
+        }
+        if spinning.elapsed() > SPIN {
+            std::thread::park();
+            spinning = Instant::now();
+        } else {
+            std::thread::yield_now();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A batch of blocks with a vertex in every lane, all different.
+    fn inputs() -> [HalfBlocks; 2] {
+        let mut inputs = [half_blocks(), half_blocks()];
+        for (b, block) in inputs
+            .iter_mut()
+            .flat_map(|half| half.iter_mut())
+            .enumerate()
+        {
+            for lane in 0..crate::lighting::lanes::LANES {
+                let t = (b * crate::lighting::lanes::LANES + lane) as f32 / 1024.0;
+                block.set_position(lane, glam::Vec4::new(t - 0.5, 0.5 - t, 0.25 * t, 1.0));
+                block.set_normal(lane, glam::Vec3::new(t, 1.0 - t, 0.5));
+            }
+            block.len = crate::lighting::lanes::LANES;
+        }
+        inputs
+    }
+
+    /// A chunk the helper began and did not finish (descheduled) is lit by the collecting
+    /// thread after `LONG_WAIT`; the helper's chunks lit in time are streamed as they are;
+    /// the stream is the whole batch in order, as one thread lights it; and the helper is
+    /// not offered the next batch.
+    #[test]
+    fn a_chunk_the_helper_leaves_unfinished_is_lit_by_the_collecting_thread() {
+        let mut ctx = crate::Context::new();
+        ctx.set_capability(crate::gl::GL_LIGHTING, true).unwrap();
+        ctx.set_capability(crate::gl::GL_LIGHT0, true).unwrap();
+        ctx.set_capability(crate::gl::GL_LIGHT1, true).unwrap();
+        let derived = ctx.shared_derived();
+        let job = Job::new();
+        // Not queued: the helper thread, if any, never sees this job.
+        let offer = publish(&job, &derived, Faces::Front, inputs());
+        let chunks = &job.slot(offer.seq).chunks;
+        // The "helper" lit the last chunk, and began the one before and stalled.
+        let helper_claims = |index: usize| {
+            chunks[index].state.compare_exchange(
+                state(offer.seq, Phase::Offered),
+                state(offer.seq, Phase::Helper),
+                Ordering::Acquire,
+                Ordering::Relaxed,
+            )
+        };
+        assert!(helper_claims(CHUNKS - 1).is_ok());
+        offer.light(CHUNKS - 1, &mut lock(&chunks[CHUNKS - 1].outputs)[..]);
+        chunks[CHUNKS - 1]
+            .state
+            .store(state(offer.seq, Phase::Lit), Ordering::Release);
+        assert!(helper_claims(CHUNKS - 2).is_ok());
+        let mut expected = vec![OutputBlock::default(); 2 * HALF_BLOCKS];
+        for (half, inputs) in offer.inputs.iter().enumerate() {
+            let outputs = &mut expected[half * HALF_BLOCKS..][..HALF_BLOCKS];
+            process_blocks(&derived, Faces::Front, &inputs[..], outputs);
+        }
+        let mut offers = Offers::default();
+        let mut scratch = vec![OutputBlock::default(); CHUNK_BLOCKS];
+        let mut streamed = Vec::new();
+        let waiting = Instant::now();
+        let returned = collect(&job, offer, &mut offers, &mut scratch, |output| {
+            streamed.push(*output)
+        });
+        assert!(waiting.elapsed() >= LONG_WAIT);
+        assert!(streamed == expected, "the stream differs from one thread's");
+        assert!(returned.is_some(), "the inputs come back to fill again");
+        assert!(
+            !offers.offer_now(),
+            "the late helper is offered the next batch"
+        );
+        assert!(offers.offer_now());
     }
 }
