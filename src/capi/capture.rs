@@ -3,14 +3,15 @@
 //! fflCaptureReadTexCoords (every texture unit's coordinates) and the bulk
 //! lighting call fflLightVertices (see `commands::capture` and `pipeline::capture`).
 
-use glam::Vec4;
+use glam::{Mat4, Vec4};
 
 use super::with_context;
 use crate::commands::capture::BulkLayout;
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use crate::lighting::batch::Faces;
-use crate::pipeline::block::OutputBlock;
+use crate::lighting::lanes::LANES;
+use crate::pipeline::block::{Lanes4, OutputBlock};
 use crate::pipeline::capture::CapturedPrimitive;
 use crate::pipeline::vertex::ProcessedVertex;
 use crate::state::texture::MAX_TEXTURE_UNITS;
@@ -312,16 +313,13 @@ pub unsafe extern "C" fn fflLightVertices(
             count,
             faces,
             |first, block| {
-                for (lane, i) in (first..first + block.len).enumerate() {
-                    layout
-                        .positions
-                        .read_lane(positions, i, &mut block.position, lane);
-                    if let Some(n) = normals {
-                        layout.normals.read_lane(n, i, &mut block.normal, lane);
-                    }
-                    if let Some(c) = colors {
-                        layout.colors.read_lane(c, i, &mut block.color, lane);
-                    }
+                let len = block.len;
+                (layout.positions).read_block(positions, first, len, &mut block.position);
+                if let Some(normals) = normals {
+                    (layout.normals).read_block(normals, first, len, &mut block.normal);
+                }
+                if let Some(colors) = colors {
+                    (layout.colors).read_block(colors, first, len, &mut block.color);
                 }
             },
             // SAFETY: the caller guarantees `count` elements at each output's stride, not
@@ -359,15 +357,39 @@ impl BulkOutputs {
             if out.is_null() {
                 continue;
             }
-            for lane in 0..block.len {
-                let value = lanes.map(|component| component[lane]);
-                // SAFETY: forwarded from the caller.
-                unsafe {
-                    out.byte_add(layout.offset(first + lane))
-                        .cast::<[GLfloat; 4]>()
-                        .write_unaligned(value)
-                };
+            // SAFETY: forwarded from the caller.
+            unsafe {
+                let out = out.byte_add(layout.offset(first));
+                if layout.stride == 16 {
+                    // Packed, the common case: the offsets constants.
+                    write_transposed(out, 16, lanes, block.len);
+                } else {
+                    write_transposed(out, layout.stride, lanes, block.len);
+                }
             }
+        }
+    }
+}
+
+/// Lanes `0..len` of the four components `lanes` to `out`, a vertex every `stride` bytes: 4
+/// lanes at a time, a 4 x 4 transposition (a few shuffles on SSE2 and NEON), each vertex
+/// stored whole, in lane order.
+///
+/// # Safety
+/// `out` holds `len` vertices of 4 floats at `stride`.
+#[inline(always)]
+unsafe fn write_transposed(out: *mut GLfloat, stride: usize, lanes: &Lanes4, len: usize) {
+    for half in 0..LANES / 4 {
+        let vertices =
+            Mat4::from_cols_array_2d(&lanes.map(|c| c[4 * half..][..4].try_into().expect("4")))
+                .transpose();
+        for k in 0..4.min(len.saturating_sub(4 * half)) {
+            // SAFETY: forwarded from the caller; 4 * half + k < len.
+            unsafe {
+                out.byte_add((4 * half + k) * stride)
+                    .cast::<[GLfloat; 4]>()
+                    .write_unaligned(vertices.col(k).to_array())
+            };
         }
     }
 }
