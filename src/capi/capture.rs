@@ -6,7 +6,7 @@
 use glam::{Mat4, Vec4};
 
 use super::with_context;
-use crate::commands::capture::BulkLayout;
+use crate::commands::capture::{BulkLayout, FloatLayout};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use crate::lighting::batch::Faces;
@@ -315,11 +315,14 @@ pub unsafe extern "C" fn fflLightVertices(
             |first, block| {
                 let len = block.len;
                 (layout.positions).read_block(positions, first, len, &mut block.position);
+                prefetch(positions, layout.positions, first + PREFETCH_AHEAD);
                 if let Some(normals) = normals {
                     (layout.normals).read_block(normals, first, len, &mut block.normal);
+                    prefetch(normals, layout.normals, first + PREFETCH_AHEAD);
                 }
                 if let Some(colors) = colors {
                     (layout.colors).read_block(colors, first, len, &mut block.color);
+                    prefetch(colors, layout.colors, first + PREFETCH_AHEAD);
                 }
             },
             // SAFETY: the caller guarantees `count` elements at each output's stride, not
@@ -327,6 +330,24 @@ pub unsafe extern "C" fn fflLightVertices(
             |first, block| unsafe { outputs.write(first, block) },
         )
     })
+}
+
+/// How many vertices ahead of the block it reads the bulk call prefetches its inputs.
+const PREFETCH_AHEAD: usize = 256;
+
+/// Asks for the cache lines of a block's elements `first..first + LANES` of `bytes` (those
+/// inside it), to be read later.
+fn prefetch(bytes: &[u8], layout: FloatLayout, first: usize) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
+        let start = layout.offset(first);
+        let end = bytes.len().min(layout.offset(first + LANES));
+        for at in (start..end).step_by(64) {
+            // SAFETY: SSE is part of x86-64; a prefetch reads nothing the program sees.
+            unsafe { _mm_prefetch::<_MM_HINT_T0>(bytes[at..].as_ptr().cast()) };
+        }
+    }
 }
 
 /// fflLightVertices' six outputs (NULL: skipped), written from the bulk call's threads.
@@ -357,14 +378,14 @@ impl BulkOutputs {
             if out.is_null() {
                 continue;
             }
-            // SAFETY: forwarded from the caller.
+            // SAFETY: forwarded from the caller. Specialized (inlined with constants) for full
+            // blocks, and for packed outputs, the common case.
             unsafe {
                 let out = out.byte_add(layout.offset(first));
-                if layout.stride == 16 {
-                    // Packed, the common case: the offsets constants.
-                    write_transposed(out, 16, lanes, block.len);
-                } else {
-                    write_transposed(out, layout.stride, lanes, block.len);
+                match (block.len, layout.stride) {
+                    (LANES, 16) => write_transposed(out, 16, lanes, LANES),
+                    (LANES, stride) => write_transposed(out, stride, lanes, LANES),
+                    (len, stride) => write_transposed(out, stride, lanes, len),
                 }
             }
         }
