@@ -82,6 +82,10 @@ impl FloatLayout {
     /// there). Chosen per block, not per element: a full block of a tightly packed array is
     /// read as one run of bytes, which the compiler turns into a few loads and shuffles.
     ///
+    /// # Panics
+    ///
+    /// When `bytes` is too short, or `lanes` has fewer components than a `size` of 2 to 4.
+    ///
     /// # Examples
     ///
     /// ```
@@ -296,8 +300,8 @@ impl Context {
 
     /// Bulk lighting a block at a time, on several threads for large counts
     /// (`threads::thread_count`): `fill(first, block)` puts vertices `first..first +
-    /// block.len` into the block's lanes (the lanes hold the current attributes, and what
-    /// `fill` puts there stays until it puts something else),
+    /// block.len` into the block's lanes (the lanes hold the current attributes and the
+    /// position (0, 0, 0, 1), and what `fill` puts there stays until it puts something else),
     /// `emit(first, block)` receives them lit (the colors of `faces`). Blocks are
     /// independent, so the results do not depend on the thread count; `emit` is called from
     /// the threads, each block once.
