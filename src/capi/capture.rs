@@ -338,13 +338,14 @@ pub unsafe extern "C" fn fflLightVertices(
 /// memory's latency covered, the lines still in the cache when their turn comes.
 const PREFETCH_AHEAD: usize = 256;
 
-/// Asks the cache for the lines of elements `first..first + LANES` (those below `count`) of
-/// the array at `base` laid out as `layout`: a hint, which reads nothing the program sees.
+/// Asks the second-level cache for the lines of elements `first..first + LANES` (those below
+/// `count`) of the array at `base` laid out as `layout`: a hint, which reads nothing the
+/// program sees. (Into the first level, 256 vertices ahead, measured a little slower.)
 #[inline(always)]
 fn prefetch_block(base: *const u8, layout: FloatLayout, count: usize, first: usize) {
     #[cfg(target_arch = "x86_64")]
     if first < count {
-        use std::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
+        use std::arch::x86_64::{_MM_HINT_T1, _mm_prefetch};
         let start = layout.offset(first);
         let end = layout.offset(count.min(first + LANES) - 1) + 4 * layout.size;
         // Every line of the elements when they share lines, else each element's first.
@@ -352,11 +353,11 @@ fn prefetch_block(base: *const u8, layout: FloatLayout, count: usize, first: usi
         let mut at = start;
         while at < end {
             // SAFETY: SSE is part of x86-64; the address is inside the array.
-            unsafe { _mm_prefetch::<_MM_HINT_T0>(base.wrapping_add(at).cast()) };
+            unsafe { _mm_prefetch::<_MM_HINT_T1>(base.wrapping_add(at).cast()) };
             at += step;
         }
         // The last line, which the steps miss when `start` is not at a line's start.
-        unsafe { _mm_prefetch::<_MM_HINT_T0>(base.wrapping_add(end - 1).cast()) };
+        unsafe { _mm_prefetch::<_MM_HINT_T1>(base.wrapping_add(end - 1).cast()) };
     }
     #[cfg(not(target_arch = "x86_64"))]
     let _ = (base, layout, count, first);
