@@ -571,3 +571,266 @@ fn capture_collects_draws_in_order_and_only_while_on() {
     unsafe { fflCaptureEnd() };
     assert_eq!(error(), "GL_NO_ERROR");
 }
+
+unsafe extern "C" {
+    fn fflSetThreads(count: GLint);
+}
+
+/// Where an array of a bulk call lives in its buffer: `stride` bytes apart (0: packed) from
+/// byte `offset`.
+#[derive(Clone, Copy, Debug)]
+struct Placed {
+    stride: usize,
+    offset: usize,
+}
+
+const fn at(stride: usize, offset: usize) -> Option<Placed> {
+    Some(Placed { stride, offset })
+}
+
+/// One layout of fflLightVertices' arrays: the position size and the places of the
+/// positions, normals, colors (None: NULL) and of the six outputs (None: NULL), each in an
+/// array of its own or, `shared`, all in one array of structs.
+struct BulkCase {
+    size: usize,
+    positions: Placed,
+    normals: Option<Placed>,
+    colors: Option<Placed>,
+    outputs: [Option<Placed>; 6],
+    shared: bool,
+}
+
+impl Placed {
+    fn stride(&self, floats: usize) -> usize {
+        if self.stride == 0 {
+            4 * floats
+        } else {
+            self.stride
+        }
+    }
+
+    /// Bytes of `count` elements of `floats` floats: up to the end of the last one.
+    fn end(&self, count: usize, floats: usize) -> usize {
+        self.offset
+            + count.saturating_sub(1) * self.stride(floats)
+            + 4 * floats * (count > 0) as usize
+    }
+}
+
+/// `count` random elements of `floats` floats placed in a buffer that ends where the last
+/// element does (a read past it panics), and the elements as read back (elements that
+/// overlap share floats).
+fn placed_input(
+    rng: &mut Rng,
+    place: Placed,
+    count: usize,
+    floats: usize,
+    lo: f64,
+    hi: f64,
+) -> (Vec<u8>, Vec<f32>) {
+    let mut bytes = vec![0u8; place.end(count, floats)];
+    let float_at = |i: usize, k: usize| place.offset + i * place.stride(floats) + 4 * k;
+    for i in 0..count {
+        for k in 0..floats {
+            let v = rng.range(lo, hi) as f32;
+            bytes[float_at(i, k)..][..4].copy_from_slice(&v.to_ne_bytes());
+        }
+    }
+    let elements = (0..count)
+        .flat_map(|i| (0..floats).map(move |k| (i, k)))
+        .map(|(i, k)| f32::from_ne_bytes(bytes[float_at(i, k)..][..4].try_into().unwrap()))
+        .collect();
+    (bytes, elements)
+}
+
+/// fflLightVertices over every kind of layout it accepts (position sizes 2 to 4; packed,
+/// padded, unaligned, overlapping and wide strides; NULL normals and colors; any subset of
+/// the outputs, packed, strided or interleaved in one array of structs), at counts around the
+/// block (8) and the chunk (128) sizes and on three threads: every output bit-identical to
+/// immediate mode, and no byte of the output buffer written outside the outputs' elements.
+#[test]
+fn bulk_lighting_reads_and_writes_every_layout() {
+    set_lit_state();
+    let none = None;
+    let all_six = |stride: usize| std::array::from_fn(|k| at(stride, 16 * k));
+    let cases = [
+        // The bench's: packed positions and normals, clip positions and front colors.
+        BulkCase {
+            size: 3,
+            positions: Placed {
+                stride: 0,
+                offset: 0,
+            },
+            normals: at(0, 0),
+            colors: none,
+            outputs: [none, at(0, 0), at(16, 0), none, none, none],
+            shared: false,
+        },
+        BulkCase {
+            size: 2,
+            positions: Placed {
+                stride: 0,
+                offset: 0,
+            },
+            normals: none,
+            colors: at(0, 0),
+            outputs: [at(0, 0); 6],
+            shared: false,
+        },
+        BulkCase {
+            size: 4,
+            positions: Placed {
+                stride: 16,
+                offset: 0,
+            },
+            normals: at(12, 0),
+            colors: at(16, 0),
+            outputs: all_six(96),
+            shared: true,
+        },
+        // Unaligned, padded.
+        BulkCase {
+            size: 3,
+            positions: Placed {
+                stride: 21,
+                offset: 1,
+            },
+            normals: at(28, 3),
+            colors: at(40, 2),
+            outputs: [at(20, 0), none, none, at(36, 4), none, at(64, 8)],
+            shared: false,
+        },
+        // Padded records; outputs interleaved with a gap.
+        BulkCase {
+            size: 2,
+            positions: Placed {
+                stride: 12,
+                offset: 0,
+            },
+            normals: at(12, 0),
+            colors: none,
+            outputs: [none, at(100, 16), none, none, at(100, 64), none],
+            shared: true,
+        },
+        // Wide strides (an element per cache line and more).
+        BulkCase {
+            size: 4,
+            positions: Placed {
+                stride: 80,
+                offset: 16,
+            },
+            normals: at(72, 4),
+            colors: at(136, 32),
+            outputs: [none, none, at(128, 0), none, at(16, 4), at(0, 12)],
+            shared: false,
+        },
+        // Overlapping elements: positions 8 bytes apart share a float.
+        BulkCase {
+            size: 3,
+            positions: Placed {
+                stride: 8,
+                offset: 0,
+            },
+            normals: none,
+            colors: none,
+            outputs: all_six(0x60),
+            shared: true,
+        },
+    ];
+    let sentinel = 0xA5u8;
+    let mut rng = Rng(77);
+    for (c, case) in cases.iter().enumerate() {
+        let counts: &[usize] = match c {
+            0 | 3 => &[1, 7, 8, 9, 127, 129, 1003, 3 * 16384 + 13],
+            _ => &[1, 7, 8, 9, 127, 129, 1003],
+        };
+        for &count in counts {
+            let what = format!("case {c} count {count}");
+            unsafe { fflSetThreads(if count > 16384 { 3 } else { 0 }) };
+            let (positions, position_values) =
+                placed_input(&mut rng, case.positions, count, case.size, -3.0, 3.0);
+            let normals = case
+                .normals
+                .map(|p| placed_input(&mut rng, p, count, 3, -1.5, 1.5));
+            let colors = case
+                .colors
+                .map(|p| placed_input(&mut rng, p, count, 4, -0.2, 1.2));
+            let expected = immediate(
+                case.size,
+                &position_values,
+                normals.as_ref().map(|n| &n.1[..]),
+                colors.as_ref().map(|c| &c.1[..]),
+            );
+
+            // The outputs one after the other in one buffer (each in its own region, or all
+            // interleaved when their places say so), with a guard after the last.
+            let region = case
+                .outputs
+                .iter()
+                .flatten()
+                .map(|p| p.end(count, 4))
+                .max()
+                .unwrap_or(0)
+                + 64;
+            let base = |k: usize| if case.shared { 0 } else { k * region };
+            let mut out = vec![sentinel; 6 * region];
+            let mut want = out.clone();
+            for (k, place) in case.outputs.iter().enumerate() {
+                let Some(place) = place else { continue };
+                for (i, vertex) in expected.iter().enumerate() {
+                    let at = base(k) + place.offset + i * place.stride(4);
+                    let value = outputs_of(vertex)[k];
+                    for (j, v) in value.iter().enumerate() {
+                        want[at + 4 * j..][..4].copy_from_slice(&v.to_ne_bytes());
+                    }
+                }
+            }
+            let input = |p: Option<&(Vec<u8>, Vec<f32>)>, place: Option<Placed>| match (p, place) {
+                (Some((bytes, _)), Some(place)) => (
+                    unsafe { bytes.as_ptr().add(place.offset) }.cast(),
+                    place.stride as GLsizei,
+                ),
+                _ => (null(), 0),
+            };
+            let (n, n_stride) = input(normals.as_ref(), case.normals);
+            let (col, col_stride) = input(colors.as_ref(), case.colors);
+            let o = out.as_mut_ptr();
+            let output = |k: usize| match case.outputs[k] {
+                Some(place) => (
+                    unsafe { o.add(base(k) + place.offset) }.cast::<f32>(),
+                    place.stride as GLsizei,
+                ),
+                None => (null_mut(), 0),
+            };
+            unsafe {
+                fflLightVertices(
+                    count as GLsizei,
+                    case.size as GLint,
+                    positions.as_ptr().add(case.positions.offset).cast(),
+                    case.positions.stride as GLsizei,
+                    n,
+                    n_stride,
+                    col,
+                    col_stride,
+                    output(0).0,
+                    output(0).1,
+                    output(1).0,
+                    output(1).1,
+                    output(2).0,
+                    output(2).1,
+                    output(3).0,
+                    output(3).1,
+                    output(4).0,
+                    output(4).1,
+                    output(5).0,
+                    output(5).1,
+                )
+            };
+            assert_eq!(error(), "GL_NO_ERROR", "{what}");
+            if let Some(byte) = (0..out.len()).find(|&b| out[b] != want[b]) {
+                panic!("{what}: byte {byte} of the outputs differs (region size {region})");
+            }
+        }
+    }
+    unsafe { fflSetThreads(0) };
+}

@@ -2,7 +2,7 @@
 //! with another renderer: capture of the assembled primitives of every draw
 //! (`pipeline::capture`), and bulk lighting of whole vertex arrays.
 
-use glam::{Vec3, Vec4};
+use glam::{Mat4, Vec3, Vec4};
 
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
@@ -76,29 +76,94 @@ impl FloatLayout {
         i * self.stride
     }
 
-    /// Element `i` of `bytes` into lane `lane` of the components `lanes`, padded with
-    /// (0, 0, 0, 1); components past the element's and the lanes' count are left out.
+    /// Elements `first..first + len` of `bytes` (`len` at most `LANES`) into lanes `0..len`
+    /// of the components `lanes`: its first `size` components, the others and the other lanes
+    /// left as they are (a bulk call's blocks keep the padding (0, 0, 0, 1) of their template
+    /// there). Chosen per block, not per element: a full block of a tightly packed array is
+    /// read as one run of bytes, which the compiler turns into a few loads and shuffles.
+    ///
+    /// # Panics
+    ///
+    /// When `bytes` is too short, or `lanes` has fewer components than a `size` of 2 to 4.
     ///
     /// # Examples
     ///
     /// ```
     /// use fflight::commands::capture::FloatLayout;
-    /// let bytes: Vec<u8> = [1.0f32, 2.0].iter().flat_map(|v| v.to_ne_bytes()).collect();
-    /// let mut lanes = [[9.0; 8]; 4];
-    /// FloatLayout::new(2, 0)?.read_lane(&bytes, 0, &mut lanes, 5);
-    /// assert_eq!(lanes.map(|c| c[5]), [1.0, 2.0, 0.0, 1.0]);
+    /// let floats = [1.0f32, 2.0, 3.0, 4.0, 5.0, 6.0];
+    /// let bytes: Vec<u8> = floats.iter().flat_map(|v| v.to_ne_bytes()).collect();
+    /// let mut lanes = [[0.0; 8], [0.0; 8], [0.0; 8], [1.0; 8]];
+    /// FloatLayout::new(2, 0)?.read_block(&bytes, 1, 2, &mut lanes); // elements 1 and 2
+    /// assert_eq!(lanes.map(|c| c[1]), [5.0, 6.0, 0.0, 1.0]);
+    /// assert_eq!(lanes[0][2], 0.0); // past `len`: left alone
     /// # Ok::<(), fflight::GlError>(())
     /// ```
-    pub fn read_lane(&self, bytes: &[u8], i: usize, lanes: &mut [LanesF32], lane: usize) {
-        // Straight into the lanes, a component at a time: gathered into an array first, the
-        // element would be stored in pieces and loaded whole, which stalls.
-        let element = &bytes[self.offset(i)..][..4 * self.size];
+    pub fn read_block(&self, bytes: &[u8], first: usize, len: usize, lanes: &mut [LanesF32]) {
+        match self.size {
+            2 => self.read_block_of::<2>(bytes, first, len, lanes),
+            3 => self.read_block_of::<3>(bytes, first, len, lanes),
+            4 => self.read_block_of::<4>(bytes, first, len, lanes),
+            size => {
+                for (lane, i) in (first..first + len).enumerate() {
+                    let element = &bytes[self.offset(i)..][..4 * size];
+                    for (component, value) in lanes.iter_mut().zip(element.chunks_exact(4)) {
+                        component[lane] = f32::from_ne_bytes(value.try_into().expect("4 bytes"));
+                    }
+                }
+            }
+        }
+    }
+
+    /// `read_block` for elements of `N` floats: the sizes known, the loops unrolled.
+    #[inline(always)]
+    fn read_block_of<const N: usize>(
+        &self,
+        bytes: &[u8],
+        first: usize,
+        len: usize,
+        lanes: &mut [LanesF32],
+    ) {
+        let lanes = &mut lanes[..N];
+        let float = |bytes: &[u8], k: usize| {
+            f32::from_ne_bytes(bytes[4 * k..][..4].try_into().expect("4 bytes"))
+        };
+        let end = |len: usize| self.offset(first + len - 1) + 16;
+        if len == LANES && bytes.len() >= end(LANES) {
+            let run = &bytes[self.offset(first)..end(LANES)];
+            if self.stride == 4 * N {
+                // The common packed arrays: the offsets constants, no check left per lane.
+                read_transposed(&run[..4 * N * (LANES - 1) + 16], 4 * N, lanes);
+            } else {
+                read_transposed(run, self.stride, lanes);
+            }
+        } else {
+            for lane in 0..len {
+                let element = &bytes[self.offset(first + lane)..][..4 * N];
+                for (c, component) in lanes.iter_mut().enumerate() {
+                    component[lane] = float(element, c);
+                }
+            }
+        }
+    }
+}
+
+/// A block's elements, `stride` bytes apart in `run`, each read as 16 bytes (its floats and
+/// what follows them), into the components `lanes`: 4 lanes at a time, a 4 x 4
+/// transposition, which glam does in a few shuffles on SSE2 and NEON.
+#[inline(always)]
+fn read_transposed(run: &[u8], stride: usize, lanes: &mut [LanesF32]) {
+    for half in 0..LANES / 4 {
+        let elements = Mat4::from_cols_array_2d(&std::array::from_fn(|k| {
+            let element: &[u8; 16] = run[(4 * half + k) * stride..][..16]
+                .try_into()
+                .expect("16 bytes");
+            std::array::from_fn(|c| {
+                f32::from_ne_bytes(element[4 * c..][..4].try_into().expect("4 bytes"))
+            })
+        }))
+        .transpose();
         for (c, component) in lanes.iter_mut().enumerate() {
-            component[lane] = match element.get(4 * c..4 * c + 4) {
-                Some(value) => f32::from_ne_bytes(value.try_into().expect("4 bytes")),
-                None if c == 3 => 1.0,
-                None => 0.0,
-            };
+            component[4 * half..][..4].copy_from_slice(&elements.col(c).to_array());
         }
     }
 }
@@ -235,8 +300,8 @@ impl Context {
 
     /// Bulk lighting a block at a time, on several threads for large counts
     /// (`threads::thread_count`): `fill(first, block)` puts vertices `first..first +
-    /// block.len` into the block's lanes (the lanes hold the current attributes, and what
-    /// `fill` puts there stays until it puts something else),
+    /// block.len` into the block's lanes (the lanes hold the current attributes and the
+    /// position (0, 0, 0, 1), and what `fill` puts there stays until it puts something else),
     /// `emit(first, block)` receives them lit (the colors of `faces`). Blocks are
     /// independent, so the results do not depend on the thread count; `emit` is called from
     /// the threads, each block once.
