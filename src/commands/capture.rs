@@ -2,7 +2,7 @@
 //! with another renderer: capture of the assembled primitives of every draw
 //! (`pipeline::capture`), and bulk lighting of whole vertex arrays.
 
-use glam::{Mat4, Vec3, Vec4};
+use glam::{Vec3, Vec4};
 
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
@@ -10,6 +10,7 @@ use crate::lighting::batch::{Faces, process_blocks};
 use crate::lighting::lanes::{LANES, LanesF32};
 use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::pipeline::capture::Capture;
+use crate::pipeline::fetch::read_transposed;
 use crate::pipeline::vertex::{CurrentAttribs, ProcessedVertex};
 use crate::threads::threads_for;
 
@@ -143,27 +144,6 @@ impl FloatLayout {
                     component[lane] = float(element, c);
                 }
             }
-        }
-    }
-}
-
-/// A block's elements, `stride` bytes apart in `run`, each read as 16 bytes (its floats and
-/// what follows them), into the components `lanes`: 4 lanes at a time, a 4 x 4
-/// transposition, which glam does in a few shuffles on SSE2 and NEON.
-#[inline(always)]
-fn read_transposed(run: &[u8], stride: usize, lanes: &mut [LanesF32]) {
-    for half in 0..LANES / 4 {
-        let elements = Mat4::from_cols_array_2d(&std::array::from_fn(|k| {
-            let element: &[u8; 16] = run[(4 * half + k) * stride..][..16]
-                .try_into()
-                .expect("16 bytes");
-            std::array::from_fn(|c| {
-                f32::from_ne_bytes(element[4 * c..][..4].try_into().expect("4 bytes"))
-            })
-        }))
-        .transpose();
-        for (c, component) in lanes.iter_mut().enumerate() {
-            component[4 * half..][..4].copy_from_slice(&elements.col(c).to_array());
         }
     }
 }

@@ -105,7 +105,7 @@ struct ArraySource<'a> {
 /// and what follows them), into the components `lanes`: 4 lanes at a time, a 4 x 4
 /// transposition, which glam does in a few shuffles on SSE2 and NEON.
 #[inline(always)]
-fn read_transposed(run: &[u8], stride: usize, lanes: &mut [LanesF32]) {
+pub(crate) fn read_transposed(run: &[u8], stride: usize, lanes: &mut [LanesF32]) {
     for half in 0..LANES / 4 {
         let elements = Mat4::from_cols_array_2d(&std::array::from_fn(|k| {
             let element: &[u8; 16] = run[(4 * half + k) * stride..][..16]
