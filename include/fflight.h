@@ -3905,7 +3905,8 @@ struct FflContext *fflGetCurrentContext(void);
 GLboolean fflDestroyContext(struct FflContext *context);
 
 /*
- Sets how many threads fflight may use for large draws and bulk calls (process-wide):
+ Sets how many threads fflight may use for large draws, bulk calls and immediate mode's
+ batches of vertices (process-wide):
  1 keeps all work on the calling thread, 0 restores the default (the environment variable
  FFLIGHT_THREADS, else the number of cores). Results are the same whatever the count.
  GL_INVALID_VALUE for a negative count.
