@@ -13,6 +13,7 @@ use crate::lighting::batch::Faces;
 use crate::lighting::lanes::LANES;
 use crate::pipeline::block::{Lanes4, OutputBlock};
 use crate::pipeline::capture::CapturedPrimitive;
+use crate::pipeline::fetch::read_floats;
 use crate::pipeline::vertex::ProcessedVertex;
 use crate::state::texture::MAX_TEXTURE_UNITS;
 
@@ -316,14 +317,32 @@ pub unsafe extern "C" fn fflLightVertices(
             |first, block| {
                 let len = block.len;
                 let ahead = first + PREFETCH_AHEAD;
-                (layout.positions).read_block(positions, first, len, &mut block.position);
+                read_floats(
+                    positions,
+                    (layout.positions.size, layout.positions.stride),
+                    first,
+                    len,
+                    &mut block.position,
+                );
                 prefetch_block(positions.as_ptr(), layout.positions, count, ahead);
                 if let Some(normals) = normals {
-                    (layout.normals).read_block(normals, first, len, &mut block.normal);
+                    read_floats(
+                        normals,
+                        (layout.normals.size, layout.normals.stride),
+                        first,
+                        len,
+                        &mut block.normal,
+                    );
                     prefetch_block(normals.as_ptr(), layout.normals, count, ahead);
                 }
                 if let Some(colors) = colors {
-                    (layout.colors).read_block(colors, first, len, &mut block.color);
+                    read_floats(
+                        colors,
+                        (layout.colors.size, layout.colors.stride),
+                        first,
+                        len,
+                        &mut block.color,
+                    );
                     prefetch_block(colors.as_ptr(), layout.colors, count, ahead);
                 }
             },

@@ -7,10 +7,9 @@ use glam::{Vec3, Vec4};
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::lighting::batch::{Faces, process_blocks};
-use crate::lighting::lanes::{LANES, LanesF32};
+use crate::lighting::lanes::LANES;
 use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::pipeline::capture::Capture;
-use crate::pipeline::fetch::read_transposed;
 use crate::pipeline::vertex::{CurrentAttribs, ProcessedVertex};
 use crate::threads::threads_for;
 
@@ -75,76 +74,6 @@ impl FloatLayout {
     /// ```
     pub fn offset(&self, i: usize) -> usize {
         i * self.stride
-    }
-
-    /// Elements `first..first + len` of `bytes` (`len` at most `LANES`) into lanes `0..len`
-    /// of the components `lanes`: its first `size` components, the others and the other lanes
-    /// left as they are (a bulk call's blocks keep the padding (0, 0, 0, 1) of their template
-    /// there). Chosen per block, not per element: a full block of a tightly packed array is
-    /// read as one run of bytes, which the compiler turns into a few loads and shuffles.
-    ///
-    /// # Panics
-    ///
-    /// When `bytes` is too short, or `lanes` has fewer components than a `size` of 2 to 4.
-    ///
-    /// # Examples
-    ///
-    /// ```
-    /// use fflight::commands::capture::FloatLayout;
-    /// let floats = [1.0f32, 2.0, 3.0, 4.0, 5.0, 6.0];
-    /// let bytes: Vec<u8> = floats.iter().flat_map(|v| v.to_ne_bytes()).collect();
-    /// let mut lanes = [[0.0; 8], [0.0; 8], [0.0; 8], [1.0; 8]];
-    /// FloatLayout::new(2, 0)?.read_block(&bytes, 1, 2, &mut lanes); // elements 1 and 2
-    /// assert_eq!(lanes.map(|c| c[1]), [5.0, 6.0, 0.0, 1.0]);
-    /// assert_eq!(lanes[0][2], 0.0); // past `len`: left alone
-    /// # Ok::<(), fflight::GlError>(())
-    /// ```
-    pub fn read_block(&self, bytes: &[u8], first: usize, len: usize, lanes: &mut [LanesF32]) {
-        match self.size {
-            2 => self.read_block_of::<2>(bytes, first, len, lanes),
-            3 => self.read_block_of::<3>(bytes, first, len, lanes),
-            4 => self.read_block_of::<4>(bytes, first, len, lanes),
-            size => {
-                for (lane, i) in (first..first + len).enumerate() {
-                    let element = &bytes[self.offset(i)..][..4 * size];
-                    for (component, value) in lanes.iter_mut().zip(element.chunks_exact(4)) {
-                        component[lane] = f32::from_ne_bytes(value.try_into().expect("4 bytes"));
-                    }
-                }
-            }
-        }
-    }
-
-    /// `read_block` for elements of `N` floats: the sizes known, the loops unrolled.
-    #[inline(always)]
-    fn read_block_of<const N: usize>(
-        &self,
-        bytes: &[u8],
-        first: usize,
-        len: usize,
-        lanes: &mut [LanesF32],
-    ) {
-        let lanes = &mut lanes[..N];
-        let float = |bytes: &[u8], k: usize| {
-            f32::from_ne_bytes(bytes[4 * k..][..4].try_into().expect("4 bytes"))
-        };
-        let end = |len: usize| self.offset(first + len - 1) + 16;
-        if len == LANES && bytes.len() >= end(LANES) {
-            let run = &bytes[self.offset(first)..end(LANES)];
-            if self.stride == 4 * N {
-                // The common packed arrays: the offsets constants, no check left per lane.
-                read_transposed(&run[..4 * N * (LANES - 1) + 16], 4 * N, lanes);
-            } else {
-                read_transposed(run, self.stride, lanes);
-            }
-        } else {
-            for lane in 0..len {
-                let element = &bytes[self.offset(first + lane)..][..4 * N];
-                for (c, component) in lanes.iter_mut().enumerate() {
-                    component[lane] = float(element, c);
-                }
-            }
-        }
     }
 }
 

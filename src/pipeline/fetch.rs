@@ -2,8 +2,6 @@
 //! size and kind (normalized or not), that decodes a block of elements at a time into the
 //! lanes of an `InputBlock`. No per-element dispatch on the type.
 
-use std::ops::Range;
-
 use glam::Mat4;
 
 use crate::gl::*;
@@ -96,8 +94,7 @@ struct ArraySource<'a> {
     bytes: &'a [u8],
     stride: usize,
     convert: Converter,
-    /// Its size when its elements are 2 to 4 floats: a run of them is read 16 bytes an
-    /// element and transposed (`read_transposed`).
+    /// Its size when its elements are 2 to 4 floats: read with `read_floats`.
     floats: Option<usize>,
 }
 
@@ -105,7 +102,7 @@ struct ArraySource<'a> {
 /// and what follows them), into the components `lanes`: 4 lanes at a time, a 4 x 4
 /// transposition, which glam does in a few shuffles on SSE2 and NEON.
 #[inline(always)]
-pub(crate) fn read_transposed(run: &[u8], stride: usize, lanes: &mut [LanesF32]) {
+fn read_transposed(run: &[u8], stride: usize, lanes: &mut [LanesF32]) {
     for half in 0..LANES / 4 {
         let elements = Mat4::from_cols_array_2d(&std::array::from_fn(|k| {
             let element: &[u8; 16] = run[(4 * half + k) * stride..][..16]
@@ -118,6 +115,62 @@ pub(crate) fn read_transposed(run: &[u8], stride: usize, lanes: &mut [LanesF32])
         .transpose();
         for (c, component) in lanes.iter_mut().enumerate() {
             component[4 * half..][..4].copy_from_slice(&elements.col(c).to_array());
+        }
+    }
+}
+
+/// Elements `first..first + len` (at most `LANES`) of an array of `size` floats (2 to 4),
+/// element i `i * stride` bytes into `bytes`, into lanes `0..len` of the first `size`
+/// components of `lanes` (the other components and lanes left as they are). A full block
+/// whose last element has 16 bytes to read is read as one run and transposed, with constant
+/// offsets when the array is packed; the rest element by element. For array draws and for
+/// fflLightVertices.
+///
+/// # Panics
+///
+/// When `bytes` does not hold the elements.
+pub(crate) fn read_floats(
+    bytes: &[u8],
+    (size, stride): (usize, usize),
+    first: usize,
+    len: usize,
+    lanes: &mut [LanesF32],
+) {
+    debug_assert!((2..=4).contains(&size));
+    match size {
+        2 => read_floats_of::<2>(bytes, stride, first, len, lanes),
+        3 => read_floats_of::<3>(bytes, stride, first, len, lanes),
+        _ => read_floats_of::<4>(bytes, stride, first, len, lanes),
+    }
+}
+
+/// `read_floats` for elements of `N` floats: the sizes known, the loops unrolled.
+#[inline(always)]
+fn read_floats_of<const N: usize>(
+    bytes: &[u8],
+    stride: usize,
+    first: usize,
+    len: usize,
+    lanes: &mut [LanesF32],
+) {
+    let components = N.min(lanes.len());
+    let lanes = &mut lanes[..components];
+    let start = first * stride;
+    let end = start + (LANES - 1) * stride + 16;
+    if len == LANES && bytes.len() >= end {
+        let run = &bytes[start..end];
+        if stride == 4 * N {
+            // Packed: the offsets constants, no check left per lane.
+            read_transposed(&run[..4 * N * (LANES - 1) + 16], 4 * N, lanes);
+        } else {
+            read_transposed(run, stride, lanes);
+        }
+    } else {
+        for lane in 0..len {
+            let element = &bytes[start + lane * stride..][..4 * N];
+            for (c, component) in lanes.iter_mut().enumerate() {
+                component[lane] = f32::from_ne_bytes(element[4 * c..][..4].try_into().expect("4"));
+            }
         }
     }
 }
@@ -250,30 +303,25 @@ impl<'a> ArrayFetch<'a> {
     /// ```
     pub fn fill_run(&self, block: &mut InputBlock, first: usize, len: usize) {
         self.fill_with(block, len, |source, offsets| {
-            let start = (first - self.base) * source.stride;
-            // Each element is read as 16 bytes: the last's must be in the array.
-            let end = start + (LANES - 1) * source.stride + 16;
-            if let Some(size) = source.floats
-                && len == LANES
-                && source.bytes.len() >= end
-            {
-                return Some((start..end, size));
+            if source.floats.is_some() {
+                return Some(first - self.base);
             }
             for (lane, offset) in offsets.iter_mut().enumerate() {
-                *offset = start + lane * source.stride;
+                *offset = (first - self.base + lane) * source.stride;
             }
             None
         });
     }
 
     /// The arrays' elements into `block`'s `len` lanes: `locate(source, offsets)` gives the
-    /// bytes of a full block's run of floats and their count, or sets the elements' offsets.
+    /// first element of a run of an array of floats (`read_floats`), or sets the elements'
+    /// byte offsets for its converter.
     #[inline(always)]
     fn fill_with(
         &self,
         block: &mut InputBlock,
         len: usize,
-        locate: impl Fn(&ArraySource, &mut [usize; LANES]) -> Option<(Range<usize>, usize)>,
+        locate: impl Fn(&ArraySource, &mut [usize; LANES]) -> Option<usize>,
     ) {
         let mut offsets = [0; LANES];
         block.len = len;
@@ -290,16 +338,15 @@ impl<'a> ArrayFetch<'a> {
                 // Fog coordinates and color indices reach nothing an RGBA vertex computes.
                 ArrayKind::FogCoord | ArrayKind::Index => continue,
             };
-            match locate(source, &mut offsets) {
-                Some((run, size)) => {
-                    let (read, padded) = out.split_at_mut(size.min(out.len()));
-                    read_transposed(&source.bytes[run], source.stride, read);
+            match (locate(source, &mut offsets), source.floats) {
+                (Some(first), Some(size)) => {
+                    read_floats(source.bytes, (size, source.stride), first, len, out);
                     // Missing components are (z, w) = (0, 1) (§2.8).
-                    for (c, component) in padded.iter_mut().enumerate() {
-                        *component = [if size + c == 3 { 1.0 } else { 0.0 }; LANES];
+                    for (c, component) in out.iter_mut().enumerate().skip(size) {
+                        *component = [if c == 3 { 1.0 } else { 0.0 }; LANES];
                     }
                 }
-                None => (source.convert)(source.bytes, &offsets[..len], out),
+                _ => (source.convert)(source.bytes, &offsets[..len], out),
             }
             if kind == ArrayKind::EdgeFlag {
                 for (flag, value) in block.edge_flag.iter_mut().zip(edge_flags[0]) {
