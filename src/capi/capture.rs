@@ -387,8 +387,21 @@ fn prefetch_block(base: *const u8, layout: FloatLayout, count: usize, first: usi
 struct BulkOutput {
     pointer: *mut GLfloat,
     layout: FloatLayout,
-    /// Where the lanes are in an `OutputBlock`, in bytes.
-    lanes: usize,
+    /// Which of `output_lanes`.
+    field: usize,
+}
+
+/// A lit block's lanes of fflLightVertices' output `field`: eye, clip, front primary, front
+/// secondary, back primary, back secondary.
+fn output_lanes(block: &OutputBlock, field: usize) -> &Lanes4 {
+    [
+        &block.eye,
+        &block.clip,
+        &block.front_primary,
+        &block.front_secondary,
+        &block.back_primary,
+        &block.back_secondary,
+    ][field]
 }
 
 /// fflLightVertices' outputs given (not NULL), written from the bulk call's threads.
@@ -408,26 +421,18 @@ impl BulkOutputs {
     /// The outputs among `pointers` (eye, clip, front primary, front secondary, back primary,
     /// back secondary; NULL: skipped) laid out as `layouts`, of `count` vertices.
     fn new(pointers: [*mut GLfloat; 6], layouts: [FloatLayout; 6], count: usize) -> BulkOutputs {
-        let lanes = [
-            std::mem::offset_of!(OutputBlock, eye),
-            std::mem::offset_of!(OutputBlock, clip),
-            std::mem::offset_of!(OutputBlock, front_primary),
-            std::mem::offset_of!(OutputBlock, front_secondary),
-            std::mem::offset_of!(OutputBlock, back_primary),
-            std::mem::offset_of!(OutputBlock, back_secondary),
-        ];
         let mut outputs = [BulkOutput {
             pointer: std::ptr::null_mut(),
             layout: layouts[0],
-            lanes: 0,
+            field: 0,
         }; 6];
         let mut len = 0;
-        for ((pointer, layout), lanes) in pointers.into_iter().zip(layouts).zip(lanes) {
+        for (field, (pointer, layout)) in pointers.into_iter().zip(layouts).enumerate() {
             if !pointer.is_null() {
                 outputs[len] = BulkOutput {
                     pointer,
                     layout,
-                    lanes,
+                    field,
                 };
                 len += 1;
             }
@@ -447,12 +452,7 @@ impl BulkOutputs {
     unsafe fn write(&self, first: usize, block: &OutputBlock) {
         for output in &self.outputs[..self.len] {
             let layout = output.layout;
-            // SAFETY: `lanes` is the offset of a `Lanes4` field of `OutputBlock`.
-            let lanes = unsafe {
-                &*std::ptr::from_ref(block)
-                    .byte_add(output.lanes)
-                    .cast::<Lanes4>()
-            };
+            let lanes = output_lanes(block, output.field);
             let base = output.pointer.cast::<u8>();
             prefetch_block(base, layout, self.count, first + PREFETCH_AHEAD);
             // SAFETY: forwarded from the caller. Specialized (inlined with constants) for full
