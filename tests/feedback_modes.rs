@@ -7,14 +7,6 @@ mod common;
 
 use common::*;
 
-const TYPES: [GLenum; 5] = [
-    GL_2D,
-    GL_3D,
-    GL_3D_COLOR,
-    GL_3D_COLOR_TEXTURE,
-    GL_4D_COLOR_TEXTURE,
-];
-
 fn feedback_buffer(size: i32, kind: GLenum, buffer: &mut [f32]) {
     assert!(size <= buffer.len() as i32);
     // SAFETY: `buffer` has room for `size` floats and outlives the feedback pass of each test.
@@ -77,7 +69,7 @@ fn select_mode_without_a_selection_buffer_is_invalid_operation() {
 fn feedback_buffer_state_round_trips_for_every_type() {
     let _ctx = fresh();
     let mut buf = [SENTINEL_F; 64];
-    for (i, kind) in TYPES.into_iter().enumerate() {
+    for (i, kind) in FEEDBACK_TYPES.into_iter().enumerate() {
         let size = 10 + i as i32;
         feedback_buffer(size, kind, &mut buf);
         expect_no_error(&format!("glFeedbackBuffer type {kind:#x}"));
@@ -331,7 +323,7 @@ fn array_points_in_place_equal_kept_values_and_stop_at_the_count() {
         let x = if outside { 2.0 } else { -0.9 + 0.05 * i as f32 };
         positions.extend_from_slice(&[x, 0.01 * i as f32, -0.5]);
     }
-    for kind in TYPES {
+    for kind in FEEDBACK_TYPES {
         let mut kept = fflight::Context::new();
         kept.viewport(0, 0, 100, 100).unwrap();
         kept.feedback_buffer(1000, kind, 64).unwrap();

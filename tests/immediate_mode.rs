@@ -175,6 +175,16 @@ fn feedback(ctx: &mut Context, kind: GLenum, draw: impl FnOnce(&mut Context)) ->
 }
 
 /// The steps in one glBegin(GL_POINTS) / glEnd.
+/// `got` equals `expected` to the bit, value for value.
+fn assert_same_bits(got: &[f32], expected: &[f32], what: &str) {
+    assert_eq!(got.len(), expected.len(), "{what}: value counts");
+    let first = got
+        .iter()
+        .zip(expected)
+        .position(|(a, b)| a.to_bits() != b.to_bits());
+    assert_eq!(first, None, "{what}: first differing value");
+}
+
 fn together(ctx: &mut Context, steps: &[Step]) -> Vec<f32> {
     feedback(ctx, GL_4D_COLOR_TEXTURE, |ctx| {
         ctx.begin(GL_POINTS).unwrap();
@@ -280,34 +290,7 @@ fn edge_flags_between_vertices_are_honored() {
     };
     let got = draw(&mut scene(2), &steps, false);
     let expected = draw(&mut scene(2), &steps, true);
-    assert_eq!(got.len(), expected.len());
-    assert!(
-        got.iter()
-            .zip(&expected)
-            .all(|(a, b)| a.to_bits() == b.to_bits())
-    );
-}
-
-/// The helper thread lights half of each large batch when there is more than one thread:
-/// the feedback is the same to the bit with one thread and with two (and the draw is large
-/// enough for the helper to take part, on any machine, several times).
-#[test]
-fn one_thread_or_two_feed_back_the_same() {
-    let steps = steps(6, 40_000, ALL);
-    let draw = |threads: i32| {
-        fflight::threads::set_threads(threads).unwrap();
-        let values = together(&mut scene(8), &steps);
-        fflight::threads::set_threads(0).unwrap();
-        values
-    };
-    let one = draw(1);
-    let two = draw(2);
-    assert_eq!(one.len(), two.len());
-    assert!(
-        one.iter()
-            .zip(&two)
-            .all(|(a, b)| a.to_bits() == b.to_bits())
-    );
+    assert_same_bits(&got, &expected, "edge flags");
 }
 
 /// Many primitives of lengths about a batch's (1024 vertices) and its multiples, of three
@@ -345,12 +328,6 @@ fn primitives_across_batches_feed_back_the_same_on_any_thread_count() {
     };
     let one = draw(1);
     for threads in [2, 3] {
-        let more = draw(threads);
-        assert_eq!(one.len(), more.len());
-        let first = one
-            .iter()
-            .zip(&more)
-            .position(|(a, b)| a.to_bits() != b.to_bits());
-        assert_eq!(first, None, "{threads} threads: first differing value");
+        assert_same_bits(&draw(threads), &one, &format!("{threads} threads"));
     }
 }

@@ -602,13 +602,6 @@ const PRIMITIVES: [GLenum; 10] = [
     GL_QUAD_STRIP,
     GL_POLYGON,
 ];
-const FEEDBACK_TYPES: [GLenum; 5] = [
-    GL_2D,
-    GL_3D,
-    GL_3D_COLOR,
-    GL_3D_COLOR_TEXTURE,
-    GL_4D_COLOR_TEXTURE,
-];
 const RENDER_MODES: [GLenum; 3] = [GL_RENDER, GL_FEEDBACK, GL_SELECT];
 const CLIP_PLANES: [GLenum; 6] = [
     GL_CLIP_PLANE0,

@@ -244,6 +244,15 @@ impl Drop for Fresh {
 }
 
 /// Values a query must not write: anything left there after the call was never written.
+/// glFeedbackBuffer's five types.
+pub const FEEDBACK_TYPES: [GLenum; 5] = [
+    GL_2D,
+    GL_3D,
+    GL_3D_COLOR,
+    GL_3D_COLOR_TEXTURE,
+    GL_4D_COLOR_TEXTURE,
+];
+
 pub const SENTINEL_F: f32 = -12345.5;
 pub const SENTINEL_D: f64 = -12345.5;
 pub const SENTINEL_I: i32 = -123_456_789;
