@@ -139,20 +139,7 @@ impl Context {
             |k, out| draw.run_into(k, out),
             |step| match step {
                 // Every earlier chunk is appended: this one's points go straight in.
-                Step::Run(k) => draw.run(k, |block| {
-                    let (visible, window) = visible_points(&draw.viewport, &draw.planes, block);
-                    match layout {
-                        Some(_) => self.feedback.points(
-                            &visible,
-                            &window,
-                            &block.front_primary,
-                            &block.tex_coord,
-                        ),
-                        None => (0..LANES)
-                            .filter(|&lane| visible[lane])
-                            .for_each(|lane| self.selection.hit(window[2][lane])),
-                    }
-                }),
+                Step::Run(k) => draw.run(k, |block| self.feedback_points(&draw.planes, block)),
                 Step::Take(out) => {
                     if let Some((min, max)) = out.hits {
                         self.selection.hit(min);
