@@ -44,6 +44,7 @@ test: build
 	$(MAKE) --no-print-directory test-sweep-sanitize
 	$(MAKE) --no-print-directory test-valgrind
 	$(MAKE) --no-print-directory test-valgrind-rust
+	@echo "make test: target/ holds $$(du -sh target | cut -f1)"
 
 # The demo scene (examples/demo/scene.c: a lit sphere on a lit floor, three lights) through
 # fflight and through OSMesa, fed back and compared: a short summary, the raw rows in
@@ -182,7 +183,8 @@ test-sanitize: build
 	@$(MAKE) --no-print-directory -j2 $(SANITIZE_PROGRAMS)
 	@echo "test-sanitize: $(words $(SANITIZE_PROGRAMS)) programs under ASan and UBSan, no report"
 
-# One program: built, run, its sanitizer reports (stderr) grepped; a clean run leaves .ok.
+# One program: built, run, its sanitizer reports (stderr) grepped; a clean run leaves .ok and
+# removes the program (each is a 45 MB static copy of the debug library), a report keeps it.
 $(SANITIZE_DIR)/%.ok: c_tests/%.c c_tests/ffl_test.h $(LIB)
 	@libs=$$(sed -n 's/.*ffl-libs:\(.*\)/\1/p' $< | head -1); \
 	if [ -n "$$libs" ]; then libs="$$libs -rdynamic"; fi; \
@@ -190,7 +192,7 @@ $(SANITIZE_DIR)/%.ok: c_tests/%.c c_tests/ffl_test.h $(LIB)
 	@ASAN_OPTIONS=detect_leaks=1 $(@:.ok=) > $(@:.ok=.txt) 2> $(@:.ok=.err) || true
 	@if grep -q 'ERROR: AddressSanitizer\|ERROR: LeakSanitizer\|runtime error' $(@:.ok=.err); then \
 		echo "sanitizer report: $*"; cat $(@:.ok=.err); exit 1; fi
-	@touch $@
+	@touch $@ && rm -f $(@:.ok=)
 
 # ---- valgrind memcheck over the C test programs ----
 # Every fflight build of c_tests (made by `cargo test`: run that first) under memcheck, two at

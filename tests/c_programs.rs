@@ -1,5 +1,5 @@
 //! Runs the C programs in `c_tests/`: each is compiled against fflight's C
-//! header and static library and, for the differential ones, unchanged
+//! header and shared library and, for the differential ones, unchanged
 //! against Mesa's OSMesa; the canonical text they print is compared token by
 //! token (the protocol is described at the top of `c_tests/ffl_test.h`).
 //!
@@ -31,6 +31,7 @@ use std::fmt::Write as _;
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
+use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
 #[path = "common/compare.rs"]
@@ -57,21 +58,43 @@ fn out_dir() -> PathBuf {
     dir
 }
 
-/// The static library to link. `cargo test` builds it next to this test
-/// binary (target/<profile>/deps/libfflight.a) while `cargo build` puts it in
-/// target/<profile>/: take the newer, so a stale `cargo build` output never
-/// shadows the library this test run just compiled.
-fn static_library() -> PathBuf {
+/// The shared library the fflight builds link: `cargo test` builds it next to this test
+/// binary (target/<profile>/deps/libfflight.so) while `cargo build` puts it in
+/// target/<profile>/; the newer is taken, so a stale `cargo build` output never shadows the
+/// library this test run just compiled. It is copied once to target/c_tests/lib under its
+/// SONAME (libfflight.so.MAJOR, what the programs ask the loader for) and the programs find
+/// it there by their run path. Linking the debug library statically would make every program
+/// a 45 MB copy of it, 4 GB for the directory, more than a small CI disk holds; `make
+/// test-sanitize` still links every program statically, one at a time.
+fn shared_library() -> &'static Path {
+    static COPY: OnceLock<PathBuf> = OnceLock::new();
+    COPY.get_or_init(|| {
+        let built = newest_build_output("libfflight.so");
+        let dir = out_dir().join("lib");
+        std::fs::create_dir_all(&dir).expect("create target/c_tests/lib");
+        let soname = format!("libfflight.so.{}", env!("CARGO_PKG_VERSION_MAJOR"));
+        let copy = dir.join(&soname);
+        // Through a temporary name, so a program never loads a half-written library.
+        let partial = dir.join(format!("{soname}.partial"));
+        std::fs::copy(&built, &partial)
+            .and_then(|_| std::fs::rename(&partial, &copy))
+            .unwrap_or_else(|e| panic!("copy {} to {}: {e}", built.display(), copy.display()));
+        copy
+    })
+}
+
+/// The newest of the crate's build outputs named `file_name` (see [`shared_library`]).
+fn newest_build_output(file_name: &str) -> PathBuf {
     let mut candidates = Vec::new();
     if let Ok(exe) = std::env::current_exe()
         && let Some(deps) = exe.parent()
     {
-        candidates.push(deps.join("libfflight.a"));
+        candidates.push(deps.join(file_name));
         if let Some(profile) = deps.parent() {
-            candidates.push(profile.join("libfflight.a"));
+            candidates.push(profile.join(file_name));
         }
     }
-    candidates.push(manifest_dir().join("target/debug/libfflight.a"));
+    candidates.push(manifest_dir().join("target/debug").join(file_name));
     candidates
         .iter()
         .filter_map(|p| {
@@ -82,8 +105,8 @@ fn static_library() -> PathBuf {
         .map(|(_, p)| p)
         .unwrap_or_else(|| {
             panic!(
-                "libfflight.a not found (looked at {candidates:?}); the crate's \
-                 crate-type must include \"staticlib\": run `cargo build` and retry"
+                "{file_name} not found (looked at {candidates:?}); the crate's \
+                 crate-type must include \"cdylib\": run `cargo build` and retry"
             )
         })
 }
@@ -192,8 +215,8 @@ const CFLAGS: &[&str] = &[
 ];
 
 /// The libraries a program's header comment asks for on a line `ffl-libs: -lGLU ...`: client
-/// libraries that draw through the GL (libGLU). The fflight build links them before
-/// libfflight.a and exports the GL entry points dynamically (`-rdynamic`), so the
+/// libraries that draw through the GL (libGLU). The fflight build links them beside
+/// libfflight.so, which the loader searches before their own dependencies (libGL), so the
 /// libraries' GL calls resolve to fflight's at run time, not to another GL also loaded.
 fn client_libraries(source: &Path) -> Vec<String> {
     let text = std::fs::read_to_string(source).unwrap_or_default();
@@ -216,10 +239,12 @@ fn compile(name: &str, build: Build) -> PathBuf {
     match build {
         Build::Fflight => {
             cmd.arg("-I").arg(root.join("include")).arg(&source);
-            if !libraries.is_empty() {
-                cmd.args(&libraries).arg("-rdynamic");
-            }
-            cmd.arg(static_library()).args(["-lm", "-lpthread", "-ldl"]);
+            cmd.args(&libraries);
+            let library = shared_library();
+            let run_path = library.parent().expect("target/c_tests/lib");
+            cmd.arg(library)
+                .arg(format!("-Wl,-rpath,{}", run_path.display()))
+                .args(["-lm", "-lpthread", "-ldl"]);
         }
         Build::Osmesa => {
             // OSMesa before the client libraries: theirs is the GL they find first.
