@@ -22,8 +22,9 @@ const VIEW_VOLUME: [Vec4; 6] = [
 ];
 
 /// 1 for a plane distance that puts a point outside: negative or NaN.
+#[inline(always)]
 fn outside(distance: f32) -> u32 {
-    u32::from(distance < 0.0 || distance.is_nan())
+    u32::from(!(distance >= 0.0))
 }
 
 /// One bit per view-volume plane (in `VIEW_VOLUME`'s order) that the clip-space point
@@ -39,25 +40,25 @@ fn outside(distance: f32) -> u32 {
 /// assert_eq!(view_volume_mask([2.0, 0.0, 0.0, 1.0]), 0b1); // beyond x = w
 /// assert_eq!(view_volume_mask([0.0, 0.0, -2.0, 1.0]), 0b1_0000); // beyond z = -w
 /// assert_eq!(view_volume_mask([f32::NAN, 0.0, 0.0, 1.0]), 0b11_1111);
+/// // x infinite: beyond x = w, and NaN for the other axes' planes.
+/// assert_eq!(view_volume_mask([f32::INFINITY, 0.0, 0.0, 1.0]), 0b11_1101);
 /// ```
+#[inline(always)]
 pub fn view_volume_mask([x, y, z, w]: [f32; 4]) -> u32 {
-    let finite = [x.is_finite(), y.is_finite(), z.is_finite()];
-    let others_finite = [
-        finite[1] & finite[2],
-        finite[0] & finite[2],
-        finite[0] & finite[1],
+    // The other two coordinates times 0, added to each plane's w ± coordinate: 0 (which
+    // leaves the sign of a distance as it is) or NaN. No branch, so lanes vectorize.
+    let (x0, y0, z0) = (x * 0.0, y * 0.0, z * 0.0);
+    let distances = [
+        (w - x) + (y0 + z0),
+        (w + x) + (y0 + z0),
+        (w - y) + (x0 + z0),
+        (w + y) + (x0 + z0),
+        (w + z) + (x0 + y0),
+        (w - z) + (x0 + y0),
     ];
     let mut mask = 0;
-    for (axis, coordinate) in [x, y, z].into_iter().enumerate() {
-        let nan = u32::from(!others_finite[axis]);
-        // Planes 2 * axis (w - coordinate, except z: w + z) and 2 * axis + 1.
-        let (first, second) = if axis == 2 {
-            (w + coordinate, w - coordinate)
-        } else {
-            (w - coordinate, w + coordinate)
-        };
-        mask |= (outside(first) | nan) << (2 * axis);
-        mask |= (outside(second) | nan) << (2 * axis + 1);
+    for (plane, distance) in distances.into_iter().enumerate() {
+        mask |= outside(distance) << plane;
     }
     mask
 }
@@ -156,6 +157,7 @@ impl ClipPlanes {
     /// let masks = ClipPlanes::new(vec![DVec4::X]).block_masks(&block);
     /// assert_eq!(masks[..3], [0, 0b1, 1 << 6]);
     /// ```
+    #[inline(always)]
     pub fn block_masks(&self, block: &OutputBlock) -> [u32; LANES] {
         let mut masks = view_volume_masks(&block.clip);
         if self.has_user_planes() {

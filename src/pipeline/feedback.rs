@@ -1,6 +1,7 @@
 //! Feedback mode (§5.3): tokens and vertex values collected for glRenderMode to return.
 
 use glam::Vec4;
+use multiversion::multiversion;
 
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
@@ -70,6 +71,17 @@ fn encode_points<const Z: bool, const W: bool, const COLOR: bool, const TEXTURE:
 ) -> usize {
     // A constant, so that the copies below compile to the layout's moves.
     let per_point = 3 + Z as usize + W as usize + 4 * COLOR as usize + 4 * TEXTURE as usize;
+    if visible.iter().all(|&v| v) {
+        // Every point drawn (the usual block): each at a constant offset, written once.
+        let out = &mut out[..LANES * per_point];
+        for (lane, point) in out.chunks_exact_mut(per_point).enumerate() {
+            let mut vertex = [0.0; MAX_VERTEX_VALUES];
+            encode_lane([Z, W, COLOR, TEXTURE], lane, arrays, &mut vertex);
+            point[0] = GL_POINT_TOKEN as f32;
+            point[1..].copy_from_slice(&vertex[..per_point - 1]);
+        }
+        return LANES * per_point;
+    }
     let mut n = 0;
     for (lane, &visible) in visible.iter().enumerate() {
         let mut point = [GL_POINT_TOKEN as f32; MAX_POINT_VALUES];
@@ -82,6 +94,31 @@ fn encode_points<const Z: bool, const W: bool, const COLOR: bool, const TEXTURE:
     n
 }
 
+/// `FeedbackLayout::encode_points`, compiled for the widest vectors the CPU has: the code
+/// outside the kernels is otherwise built for the baseline instruction set.
+#[multiversion(targets(
+    "x86_64+avx512f+avx512bw+avx512cd+avx512dq+avx512vl+avx2+fma+bmi1+bmi2+lzcnt+popcnt",
+    "x86_64+avx2+fma+bmi1+bmi2+lzcnt+popcnt",
+    "aarch64+neon"
+))]
+fn encode_points_of_layout(
+    layout: &FeedbackLayout,
+    visible: &[bool; LANES],
+    arrays: [&Lanes4; 3],
+    out: &mut [f32],
+) -> usize {
+    match (layout.z, layout.w, layout.color, layout.texture) {
+        (false, ..) => encode_points::<false, false, false, false>(visible, arrays, out),
+        (true, false, false, false) => {
+            encode_points::<true, false, false, false>(visible, arrays, out)
+        }
+        (true, false, true, false) => {
+            encode_points::<true, false, true, false>(visible, arrays, out)
+        }
+        (true, false, true, true) => encode_points::<true, false, true, true>(visible, arrays, out),
+        _ => encode_points::<true, true, true, true>(visible, arrays, out),
+    }
+}
 /// Which values a fed-back vertex carries (glFeedbackBuffer's `type`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FeedbackLayout {
@@ -108,19 +145,7 @@ impl FeedbackLayout {
         arrays: [&Lanes4; 3],
         out: &mut [f32],
     ) -> usize {
-        match (self.z, self.w, self.color, self.texture) {
-            (false, ..) => encode_points::<false, false, false, false>(visible, arrays, out),
-            (true, false, false, false) => {
-                encode_points::<true, false, false, false>(visible, arrays, out)
-            }
-            (true, false, true, false) => {
-                encode_points::<true, false, true, false>(visible, arrays, out)
-            }
-            (true, false, true, true) => {
-                encode_points::<true, false, true, true>(visible, arrays, out)
-            }
-            _ => encode_points::<true, true, true, true>(visible, arrays, out),
-        }
+        encode_points_of_layout(self, visible, arrays, out)
     }
 
     /// How many values a fed-back point takes: its token and its vertex's values.

@@ -4,6 +4,8 @@
 //! calling thread appends the chunks' results in order: the same values, in the same order,
 //! as one thread streaming the points (`Context::feedback_points`).
 
+use multiversion::multiversion;
+
 use super::block::{InputBlock, OutputBlock};
 use super::clip::ClipPlanes;
 use super::feedback::{FeedbackLayout, MAX_POINT_VALUES};
@@ -23,6 +25,12 @@ const LIT_BLOCKS: usize = 16;
 
 /// The window coordinates of a lit block's points, and which of them are drawn: inside the
 /// view volume and every enabled user clip plane (§2.12), and among the block's `len`.
+/// Compiled for the widest vectors the CPU has, as the code outside the kernels is not.
+#[multiversion(targets(
+    "x86_64+avx512f+avx512bw+avx512cd+avx512dq+avx512vl+avx2+fma+bmi1+bmi2+lzcnt+popcnt",
+    "x86_64+avx2+fma+bmi1+bmi2+lzcnt+popcnt",
+    "aarch64+neon"
+))]
 pub(crate) fn visible_points(
     viewport: &ViewportMap,
     planes: &ClipPlanes,
@@ -33,11 +41,22 @@ pub(crate) fn visible_points(
     (visible, viewport.window_lanes(&block.clip))
 }
 
-/// A chunk's results: its feedback values, or the extreme depths of its selection hits.
-#[derive(Default)]
+/// A chunk's results: its feedback values (the first `len` of `values`, which has room for
+/// every point of a chunk, made once), or the extreme depths of its selection hits.
 struct ChunkPoints {
     values: Vec<f32>,
+    len: usize,
     hits: Option<(f32, f32)>,
+}
+
+impl Default for ChunkPoints {
+    fn default() -> ChunkPoints {
+        ChunkPoints {
+            values: vec![0.0; CHUNK_BLOCKS * LANES * MAX_POINT_VALUES],
+            len: 0,
+            hits: None,
+        }
+    }
 }
 
 /// What every chunk of a draw shares.
@@ -75,18 +94,14 @@ impl PointsDraw<'_> {
 
     /// Chunk `chunk`'s points into `out`, for the calling thread to append in turn.
     fn run_into(&self, chunk: usize, out: &mut ChunkPoints) {
-        out.values.clear();
+        out.len = 0;
         out.hits = None;
         self.run(chunk, |block| {
             let (visible, window) = visible_points(&self.viewport, &self.planes, block);
             match &self.layout {
                 Some(layout) => {
-                    // Laid out in place: room for a whole block, then cut to what it wrote.
-                    let at = out.values.len();
-                    out.values.resize(at + LANES * MAX_POINT_VALUES, 0.0);
                     let arrays = [&window, &block.front_primary, &block.tex_coord];
-                    let len = layout.encode_points(&visible, arrays, &mut out.values[at..]);
-                    out.values.truncate(at + len);
+                    out.len += layout.encode_points(&visible, arrays, &mut out.values[out.len..]);
                 }
                 None => {
                     for lane in (0..LANES).filter(|&lane| visible[lane]) {
@@ -146,7 +161,7 @@ impl Context {
                         self.selection.hit(max);
                     }
                     if layout.is_some() {
-                        self.feedback.values_of(&out.values);
+                        self.feedback.values_of(&out.values[..out.len]);
                     }
                 }
             },
