@@ -94,13 +94,9 @@ fn encode_points<const Z: bool, const W: bool, const COLOR: bool, const TEXTURE:
     n
 }
 
-/// `FeedbackLayout::encode_points`, compiled for the widest vectors the CPU has: the code
-/// outside the kernels is otherwise built for the baseline instruction set.
-#[multiversion(targets(
-    "x86_64+avx512f+avx512bw+avx512cd+avx512dq+avx512vl+avx2+fma+bmi1+bmi2+lzcnt+popcnt",
-    "x86_64+avx2+fma+bmi1+bmi2+lzcnt+popcnt",
-    "aarch64+neon"
-))]
+/// `FeedbackLayout::encode_points`, compiled for AVX2 where the CPU has it, as
+/// `points::visible_points` is.
+#[multiversion(targets("x86_64+avx2+fma+bmi1+bmi2+lzcnt+popcnt", "aarch64+neon"))]
 fn encode_points_of_layout(
     layout: &FeedbackLayout,
     visible: &[bool; LANES],

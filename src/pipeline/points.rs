@@ -25,12 +25,11 @@ const LIT_BLOCKS: usize = 16;
 
 /// The window coordinates of a lit block's points, and which of them are drawn: inside the
 /// view volume and every enabled user clip plane (§2.12), and among the block's `len`.
-/// Compiled for the widest vectors the CPU has, as the code outside the kernels is not.
-#[multiversion(targets(
-    "x86_64+avx512f+avx512bw+avx512cd+avx512dq+avx512vl+avx2+fma+bmi1+bmi2+lzcnt+popcnt",
-    "x86_64+avx2+fma+bmi1+bmi2+lzcnt+popcnt",
-    "aarch64+neon"
-))]
+/// Compiled for AVX2 where the CPU has it (the code outside the kernels is otherwise built for
+/// the baseline instruction set): eight lanes, a component of a block to a register. With
+/// AVX-512's sixteen, the compiler loads two components that the kernel stored apart as one,
+/// which stalls until the stores complete.
+#[multiversion(targets("x86_64+avx2+fma+bmi1+bmi2+lzcnt+popcnt", "aarch64+neon"))]
 pub(crate) fn visible_points(
     viewport: &ViewportMap,
     planes: &ClipPlanes,
@@ -42,21 +41,13 @@ pub(crate) fn visible_points(
 }
 
 /// A chunk's results: its feedback values (the first `len` of `values`, which has room for
-/// every point of a chunk, made once), or the extreme depths of its selection hits.
+/// every point of a chunk once a helper thread used it), or the extreme depths of its
+/// selection hits.
+#[derive(Default)]
 struct ChunkPoints {
     values: Vec<f32>,
     len: usize,
     hits: Option<(f32, f32)>,
-}
-
-impl Default for ChunkPoints {
-    fn default() -> ChunkPoints {
-        ChunkPoints {
-            values: vec![0.0; CHUNK_BLOCKS * LANES * MAX_POINT_VALUES],
-            len: 0,
-            hits: None,
-        }
-    }
 }
 
 /// What every chunk of a draw shares.
@@ -96,6 +87,11 @@ impl PointsDraw<'_> {
     fn run_into(&self, chunk: usize, out: &mut ChunkPoints) {
         out.len = 0;
         out.hits = None;
+        if self.layout.is_some() {
+            // Made at the first use, not per block: the calling thread's own are never used.
+            out.values
+                .resize(CHUNK_BLOCKS * LANES * MAX_POINT_VALUES, 0.0);
+        }
         self.run(chunk, |block| {
             let (visible, window) = visible_points(&self.viewport, &self.planes, block);
             match &self.layout {
