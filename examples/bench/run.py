@@ -15,11 +15,16 @@ import argparse
 import csv
 import os
 import shutil
+import statistics
 import subprocess
 import sys
 from pathlib import Path
 
-RUNS = 7  # timed runs per scene, after the program's own warm-up run; the median is reported
+RUNS = 7  # timed runs per scene and process, after the program's own warm-up run
+# Processes per library and scene, the two libraries alternating: the reported time is the
+# median of the processes' medians. The machine is shared, and one process of either library
+# can land in a slow minute (OSMesa's own median moved by 1.7x between two processes).
+ROUNDS = 3
 PLOT_RUNS = 5
 TIMEOUT = 600  # seconds per program: a hang is a failure, not a stalled `make bench`
 # Memory bound: 1 MiB per fflight thread (a worker's stack and buffers) plus this allowance
@@ -79,13 +84,39 @@ def fmt(value, spec):
     return "error" if value is None else format(value, spec)
 
 
+def rounds(osmesa, fflight, scene, vertices):
+    """ROUNDS processes of each library on `scene`, alternating; each library's last result
+    line with the median of the processes' ns_per_vertex in it, and the ratio of each round,
+    or None for a library that failed."""
+    results = {osmesa: [], fflight: []}
+    for _ in range(ROUNDS):
+        for binary in (osmesa, fflight):
+            results[binary].append(run(binary, scene, vertices))
+    medians = []
+    for binary in (osmesa, fflight):
+        if None in results[binary]:
+            medians.append(None)
+            continue
+        line = dict(results[binary][-1])
+        line["ns_per_vertex"] = statistics.median(r["ns_per_vertex"] for r in results[binary])
+        if "ns_per_triangle" in line:
+            line["ns_per_triangle"] = statistics.median(
+                r["ns_per_triangle"] for r in results[binary])
+        medians.append(line)
+    each = [o["ns_per_vertex"] / f["ns_per_vertex"]
+            for o, f in zip(results[osmesa], results[fflight]) if o and f]
+    return medians[0], medians[1], each
+
+
 def timed_rows(osmesa, fflight, vertices):
-    rows, notes, threads = [], [], []
+    rows, notes, threads, spreads = [], [], [], []
     for scene, target in TIMED:
-        o, f = run(osmesa, scene, vertices), run(fflight, scene, vertices)
+        o, f, each = rounds(osmesa, fflight, scene, vertices)
         o_ns = o and o["ns_per_vertex"]
         f_ns = f and f["ns_per_vertex"]
         ratio = o_ns / f_ns if o and f else None
+        if each:
+            spreads.append(f"{scene} {min(each):.2f}-{max(each):.2f}")
         result = "error" if ratio is None else "PASS" if ratio >= target else "FAIL"
         rows.append([scene, fmt(o_ns, ".1f"), fmt(f_ns, ".1f"), fmt(ratio, ".2f"),
                      f">= {target}", result])
@@ -95,6 +126,7 @@ def timed_rows(osmesa, fflight, vertices):
             notes.append(f"mesh_8light: {int(f['triangles'])} triangles, ns per triangle: "
                          f"OSMesa {o['ns_per_triangle']:.1f}, fflight {f['ns_per_triangle']:.1f}")
     notes.append("fflight threads: " + ", ".join(threads))
+    notes.append(f"ratio of each of the {ROUNDS} rounds, lowest-highest: " + ", ".join(spreads))
     return rows, notes
 
 
@@ -169,7 +201,8 @@ def main():
                    f"glDrawArrays(GL_POINTS) + GL_3D_COLOR feedback, {args.vertices} points\n{cpu}")
     rows.insert(0, ["scene", "OSMesa ns/vertex", "fflight ns/vertex",
                     "ratio (OSMesa/fflight)", "target", "result"])
-    notes += [f"median of {RUNS} runs after a warm-up; {args.vertices} vertices per scene "
+    notes += [f"median of {ROUNDS} processes per library (alternating), each the median of "
+              f"{RUNS} runs after a warm-up; {args.vertices} vertices per scene "
               f"(mesh: a square grid), memory scenes {10 * args.vertices}; "
               f"load average at the start {load}",
               "memory: growth of the peak RSS (VmHWM) over one call, 1 light, after a "

@@ -8,7 +8,7 @@ use multiversion::multiversion;
 
 use super::block::{InputBlock, OutputBlock};
 use super::clip::ClipPlanes;
-use super::feedback::{FeedbackLayout, MAX_POINT_VALUES};
+use super::feedback::FeedbackLayout;
 use super::fetch::ArrayFetch;
 use super::parallel::{Step, in_order};
 use super::vertex::DerivedState;
@@ -87,10 +87,10 @@ impl PointsDraw<'_> {
     fn run_into(&self, chunk: usize, out: &mut ChunkPoints) {
         out.len = 0;
         out.hits = None;
-        if self.layout.is_some() {
+        if let Some(layout) = &self.layout {
             // Made at the first use, not per block: the calling thread's own are never used.
             out.values
-                .resize(CHUNK_BLOCKS * LANES * MAX_POINT_VALUES, 0.0);
+                .resize(CHUNK_BLOCKS * LANES * layout.point_values(), 0.0);
         }
         self.run(chunk, |block| {
             let (visible, window) = visible_points(&self.viewport, &self.planes, block);
