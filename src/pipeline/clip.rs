@@ -24,7 +24,7 @@ const VIEW_VOLUME: [Vec4; 6] = [
 /// 1 for a plane distance that puts a point outside: negative or NaN.
 #[inline(always)]
 fn outside(distance: f32) -> u32 {
-    u32::from(!(distance >= 0.0))
+    u32::from(distance < 0.0 || distance.is_nan())
 }
 
 /// One bit per view-volume plane (in `VIEW_VOLUME`'s order) that the clip-space point
