@@ -680,3 +680,45 @@ impl FeedbackBuffer {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A block's points laid out at once equal each visible lane laid out alone, for every
+    /// feedback type and a few visibility patterns (all, none, alternate, one).
+    #[test]
+    fn a_block_of_points_is_its_visible_lanes_one_by_one() {
+        let lanes = |base: f32| -> Lanes4 {
+            std::array::from_fn(|c| std::array::from_fn(|lane| base + (10 * c + lane) as f32))
+        };
+        let (window, color, tex_coord) = (lanes(100.0), lanes(200.0), lanes(300.0));
+        let types = [GL_2D, GL_3D, GL_3D_COLOR, GL_3D_COLOR_TEXTURE, GL_4D_COLOR_TEXTURE];
+        let patterns: [[bool; LANES]; 4] = [
+            [true; LANES],
+            [false; LANES],
+            std::array::from_fn(|lane| lane % 2 == 1),
+            std::array::from_fn(|lane| lane == LANES - 1),
+        ];
+        for kind in types {
+            let layout = FeedbackLayout::of(kind).unwrap();
+            for visible in patterns {
+                let mut expected = Vec::new();
+                for lane in (0..LANES).filter(|&lane| visible[lane]) {
+                    let vertex = FeedbackVertex {
+                        window: crate::pipeline::block::lanes4_get(&window, lane),
+                        color: crate::pipeline::block::lanes4_get(&color, lane),
+                        tex_coord: crate::pipeline::block::lanes4_get(&tex_coord, lane),
+                    };
+                    let mut values = [0.0; MAX_VERTEX_VALUES];
+                    let n = layout.encode(&vertex, &mut values);
+                    expected.push(GL_POINT_TOKEN as f32);
+                    expected.extend_from_slice(&values[..n]);
+                }
+                let mut out = [f32::NAN; LANES * MAX_POINT_VALUES];
+                let n = layout.encode_points(&visible, [&window, &color, &tex_coord], &mut out);
+                assert_eq!(&out[..n], &expected[..], "type {kind:#x}, visible {visible:?}");
+            }
+        }
+    }
+}
