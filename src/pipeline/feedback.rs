@@ -693,7 +693,13 @@ mod tests {
             std::array::from_fn(|c| std::array::from_fn(|lane| base + (10 * c + lane) as f32))
         };
         let (window, color, tex_coord) = (lanes(100.0), lanes(200.0), lanes(300.0));
-        let types = [GL_2D, GL_3D, GL_3D_COLOR, GL_3D_COLOR_TEXTURE, GL_4D_COLOR_TEXTURE];
+        let types = [
+            GL_2D,
+            GL_3D,
+            GL_3D_COLOR,
+            GL_3D_COLOR_TEXTURE,
+            GL_4D_COLOR_TEXTURE,
+        ];
         let patterns: [[bool; LANES]; 4] = [
             [true; LANES],
             [false; LANES],
@@ -717,7 +723,11 @@ mod tests {
                 }
                 let mut out = [f32::NAN; LANES * MAX_POINT_VALUES];
                 let n = layout.encode_points(&visible, [&window, &color, &tex_coord], &mut out);
-                assert_eq!(&out[..n], &expected[..], "type {kind:#x}, visible {visible:?}");
+                assert_eq!(
+                    &out[..n],
+                    &expected[..],
+                    "type {kind:#x}, visible {visible:?}"
+                );
             }
         }
     }
