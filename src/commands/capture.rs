@@ -2,6 +2,8 @@
 //! with another renderer: capture of the assembled primitives of every draw
 //! (`pipeline::capture`), and bulk lighting of whole vertex arrays.
 
+use std::sync::atomic::{AtomicUsize, Ordering};
+
 use glam::{Vec3, Vec4};
 
 use crate::context::Context;
@@ -252,41 +254,50 @@ impl Context {
         self.outside_begin_end()?;
         let derived = self.shared_derived();
         let template = InputBlock::with_attribs(&self.current);
-        let run = |blocks: std::ops::Range<usize>| {
+        // Lights the ranges of blocks `claim` gives until it gives none.
+        let run = |claim: &dyn Fn() -> Option<std::ops::Range<usize>>| {
             let mut inputs = [template; CHUNK_BLOCKS];
             let mut outputs = [OutputBlock::default(); CHUNK_BLOCKS];
-            for chunk in blocks.clone().step_by(CHUNK_BLOCKS) {
-                let chunk_len = CHUNK_BLOCKS.min(blocks.end - chunk);
-                for (k, input) in inputs[..chunk_len].iter_mut().enumerate() {
-                    let first = (chunk + k) * LANES;
-                    input.len = LANES.min(count - first);
-                    fill(first, input);
-                }
-                process_blocks(
-                    &derived,
-                    faces,
-                    &inputs[..chunk_len],
-                    &mut outputs[..chunk_len],
-                );
-                for (k, output) in outputs[..chunk_len].iter().enumerate() {
-                    emit((chunk + k) * LANES, output);
+            while let Some(blocks) = claim() {
+                for chunk in blocks.clone().step_by(CHUNK_BLOCKS) {
+                    let chunk_len = CHUNK_BLOCKS.min(blocks.end - chunk);
+                    for (k, input) in inputs[..chunk_len].iter_mut().enumerate() {
+                        let first = (chunk + k) * LANES;
+                        input.len = LANES.min(count - first);
+                        fill(first, input);
+                    }
+                    process_blocks(
+                        &derived,
+                        faces,
+                        &inputs[..chunk_len],
+                        &mut outputs[..chunk_len],
+                    );
+                    for (k, output) in outputs[..chunk_len].iter().enumerate() {
+                        emit((chunk + k) * LANES, output);
+                    }
                 }
             }
         };
         let blocks = count.div_ceil(LANES);
         let threads = threads_for(count);
+        // Ranges of `CLAIMED_BLOCKS` taken in turn: a thread the machine runs less takes
+        // fewer, so the threads finish together (halves fixed in advance waited for the
+        // slower one).
+        let next = AtomicUsize::new(0);
+        let claim = || {
+            let start = next.fetch_add(CLAIMED_BLOCKS, Ordering::Relaxed);
+            (start < blocks).then(|| start..(start + CLAIMED_BLOCKS).min(blocks))
+        };
         if threads == 1 {
-            run(0..blocks);
+            run(&claim);
             return Ok(());
         }
-        let share = blocks.div_ceil(threads);
         std::thread::scope(|scope| {
-            let run = &run;
-            for t in 1..threads {
-                let start = (t * share).min(blocks);
-                scope.spawn(move || run(start..((t + 1) * share).min(blocks)));
+            let (run, claim) = (&run, &claim);
+            for _ in 1..threads {
+                scope.spawn(move || run(claim));
             }
-            run(0..share.min(blocks));
+            run(claim);
         });
         Ok(())
     }
@@ -352,6 +363,12 @@ struct OutputSlots<'a>(std::sync::Mutex<&'a mut [ProcessedVertex]>);
 
 /// Blocks a thread processes at a time: inputs and outputs stay in the first-level cache.
 const CHUNK_BLOCKS: usize = 16;
+
+/// Blocks a thread of the bulk call claims at a time: 4096 vertices, about 100 us of lighting
+/// with 8 lights. Claims of 512 vertices interleave the threads' outputs finely enough that
+/// the prefetches pull lines the other thread writes (bulk, 8 spots, 2 threads: 13.2 -> 14.3
+/// ns/vertex).
+const CLAIMED_BLOCKS: usize = 32 * CHUNK_BLOCKS;
 
 /// fflLightVertices' layout, validated: the vertex count, the input arrays (positions of
 /// `position_size` floats, normals of 3, colors of 4) and the six outputs (4 floats each:
