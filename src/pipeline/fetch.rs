@@ -129,6 +129,7 @@ fn read_transposed(run: &[u8], stride: usize, lanes: &mut [LanesF32]) {
 /// # Panics
 ///
 /// When `bytes` does not hold the elements.
+#[inline(always)]
 pub(crate) fn read_floats(
     bytes: &[u8],
     (size, stride): (usize, usize),
@@ -301,6 +302,7 @@ impl<'a> ArrayFetch<'a> {
     /// fetch.fill_run(&mut block, 1, 8); // elements 1 to 8
     /// assert_eq!(lanes4_get(&block.position, 7), Vec4::new(24.0, 25.0, 26.0, 1.0));
     /// ```
+    #[inline(always)]
     pub fn fill_run(&self, block: &mut InputBlock, first: usize, len: usize) {
         self.fill_with(block, len, |source, offsets| {
             if source.floats.is_some() {

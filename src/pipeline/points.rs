@@ -40,6 +40,16 @@ pub(crate) fn visible_points(
     (visible, viewport.window_lanes(&block.clip))
 }
 
+/// Blocks `inputs` filled with the elements from `start` on (at most to `end`), `LANES` a
+/// block: compiled for AVX2 where the CPU has it, as `visible_points` is.
+#[multiversion(targets("x86_64+avx2+fma+bmi1+bmi2+lzcnt+popcnt", "aarch64+neon"))]
+fn fill_runs(fetch: &ArrayFetch, inputs: &mut [InputBlock], start: usize, end: usize) {
+    for (k, input) in inputs.iter_mut().enumerate() {
+        let first = start + k * LANES;
+        fetch.fill_run(input, first, LANES.min(end - first));
+    }
+}
+
 /// A chunk's results: its feedback values (the first `len` of `values`, which has room for
 /// every point of a chunk once a helper thread used it), or the extreme depths of its
 /// selection hits.
@@ -72,11 +82,13 @@ impl PointsDraw<'_> {
         let chunk_end = blocks.min((chunk + 1) * CHUNK_BLOCKS);
         for batch in (chunk * CHUNK_BLOCKS..chunk_end).step_by(LIT_BLOCKS) {
             let batch_len = LIT_BLOCKS.min(chunk_end - batch);
-            for (k, input) in inputs[..batch_len].iter_mut().enumerate() {
-                let start = self.first + (batch + k) * LANES;
-                let len = LANES.min(self.first + self.count - start);
-                self.fetch.fill_run(input, start, len);
-            }
+            let start = self.first + batch * LANES;
+            fill_runs(
+                self.fetch,
+                &mut inputs[..batch_len],
+                start,
+                self.first + self.count,
+            );
             let lit = &mut outputs[..batch_len];
             process_blocks(self.derived, Faces::Front, &inputs[..batch_len], lit);
             lit.iter().for_each(&mut keep);
