@@ -115,6 +115,7 @@ fn encode_points_of_layout(
         _ => encode_points::<true, true, true, true>(visible, arrays, out),
     }
 }
+
 /// Which values a fed-back vertex carries (glFeedbackBuffer's `type`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FeedbackLayout {
