@@ -51,7 +51,7 @@ fn fill_runs(fetch: &ArrayFetch, inputs: &mut [InputBlock], start: usize, end: u
 }
 
 /// A chunk's results: its feedback values (the first `len` of `values`, which has room for
-/// every point of a chunk once a helper thread used it), or the extreme depths of its
+/// every point of a chunk once a chunk was run into it), or the extreme depths of its
 /// selection hits.
 #[derive(Default)]
 struct ChunkPoints {
@@ -100,7 +100,8 @@ impl PointsDraw<'_> {
         out.len = 0;
         out.hits = None;
         if let Some(layout) = &self.layout {
-            // Made at the first use, not per block: the calling thread's own are never used.
+            // Sized at an output's first chunk, not per block: outputs never run into (most
+            // of the calling thread's, which lays its own chunks out in place) cost nothing.
             out.values
                 .resize(CHUNK_BLOCKS * LANES * layout.point_values(), 0.0);
         }
