@@ -22,9 +22,11 @@ fn clamp01(x: F) -> F {
 
 /// (`x^(e-1)`, `x^e`) for `x` >= 0, with 0^0 = 1 and `x^(e-1)` 0 for `e` = 0: the power and
 /// its slope over `e`, by repeated squaring. The slope's factor `e` is left to the constants
-/// it meets (`FastLight::specular_sensitivity`, `FastLight::spot_term_bounds`).
+/// it meets (`FastLight::specular_sensitivity`, `FastLight::spot_term_bounds`). The lanes of
+/// `small` count as 0 (see `FastLight::smallest_specular_base`): their squarings could reach
+/// subnormal numbers, which the CPU multiplies about a hundred times slower.
 #[inline(always)]
-fn power_and_below(x: F, exponent: u32) -> (F, F) {
+fn power_and_below(x: F, exponent: u32, small: Mask) -> (F, F) {
     if exponent <= 1 {
         return if exponent == 0 {
             (F::zero(), F::splat(1.0))
@@ -32,6 +34,7 @@ fn power_and_below(x: F, exponent: u32) -> (F, F) {
             (F::splat(1.0), x)
         };
     }
+    let x = (!small).keep(x);
     // x^(e-1) from the bits of e - 1, the lowest set bit's power first (no product by 1).
     let mut bits = exponent - 1;
     let mut base = x;
@@ -278,6 +281,8 @@ struct Vertex {
     /// before the rounding of the direction to it grows too large.
     conditioning: F,
     normal: V3,
+    /// Lanes whose normal is longer than 1 (beyond rounding).
+    long_normal: Mask,
     eye_direction: V3,
 }
 
@@ -377,6 +382,7 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
         position,
         conditioning: position_length * F::splat(1.0 / ILL_CONDITIONED),
         normal,
+        long_normal: normal_scale.gt(F::splat(1.0)),
         eye_direction,
     };
     let mut sums = Sums {
@@ -475,7 +481,9 @@ fn add_light<
         let cutoff = F::splat(light.spot_cos_cutoff);
         sums.refused = sums.refused | (cos_angle - cutoff).abs().lt(F::splat(DISCONTINUITY));
         let inside = cos_angle.ge(cutoff);
-        let (below, power) = power_and_below(cos_angle.max(F::zero()), light.spot_exponent);
+        // Where the normal is longer than 1, the terms the spot factor weighs are not bounded.
+        let small = cos_angle.lt(F::splat(light.smallest_spot_base)) & !vertex.long_normal;
+        let (below, power) = power_and_below(cos_angle.max(F::zero()), light.spot_exponent, small);
         let below = match attenuation {
             Some(a) => inside.keep_product(a, below),
             None => inside.keep(below),
@@ -518,7 +526,9 @@ fn add_light<
     // (and a power of 0 that is 0), one power of |n·h| serves both.
     let shininess = faces[0].shininess;
     let shared = if TWO_SIDE && shininess > 0 && faces[1].shininess == shininess {
-        Some(power_and_below(n_dot_h.abs(), shininess))
+        let [front, back] = light.smallest_specular_base;
+        let small = n_dot_h.abs().lt(F::splat(front.min(back)));
+        Some(power_and_below(n_dot_h.abs(), shininess, small))
     } else {
         None
     };
@@ -536,7 +546,10 @@ fn add_light<
         // the half vector).
         let ((below, power), counts) = match shared {
             Some(powers) => (powers, lit & n_dot_h.gt(F::zero())),
-            None => (power_and_below(n_dot_h.max(F::zero()), fast.shininess), lit),
+            None => {
+                let small = n_dot_h.lt(F::splat(light.smallest_specular_base[face]));
+                (power_and_below(n_dot_h.max(F::zero()), fast.shininess, small), lit)
+            }
         };
         let power = counts.keep(power);
         sums.diffuse[face] = sums.diffuse[face].add_weighted(weight * diffuse, light.diffuse);

@@ -100,6 +100,11 @@ struct FastLight {
     /// shininess s: how much an error in n·h moves a color, per unit of (n·h)^(s-1) (the
     /// power's slope over s).
     specular_sensitivity: [f32; 2],
+    /// The `smallest_base` of each face's specular power, and of the spot factor's (which
+    /// the kernel applies only where the normal is no longer than 1: elsewhere n·L and n·h,
+    /// and so the terms the spot factor weighs, are not bounded by `term_bounds`).
+    smallest_specular_base: [f32; 2],
+    smallest_spot_base: f32,
 }
 
 /// One face's material in single precision.
@@ -146,6 +151,20 @@ fn rgb(v: DVec3) -> [f32; 3] {
 
 fn in_range(values: &[f32]) -> bool {
     values.iter().all(|v| v.abs() <= SINGLE_RANGE)
+}
+
+/// The smallest base the kernel raises to `exponent` for a term of at most `bound` per unit of
+/// the power; below it the base counts as 0. There the power is under 2^-50 and the term
+/// under 2^-40 (a light's weight, attenuation times spot factor, is at most 1024 where the
+/// kernel serves a lane): no color shows it, and a product of two such powers (a spot factor
+/// and a specular one) stays a normal number. The power's slope goes with it, so the
+/// sensitivities lose nothing either. 0 for exponents 0 and 1, which multiply nothing.
+fn smallest_base(exponent: u32, bound: f32) -> f32 {
+    if exponent <= 1 {
+        return 0.0;
+    }
+    let negligible = (2f64.powi(-50) / f64::from(bound)).min(2f64.powi(-50));
+    negligible.powf(1.0 / f64::from(exponent)) as f32
 }
 
 fn integer_exponent(e: f64) -> Option<u32> {
@@ -310,11 +329,13 @@ impl FastLight {
                 face.bound(MaterialMask::SPECULAR, face.specular),
             );
             fast.specular_sensitivity[k] = HALF_VECTOR_ROUNDINGS * s * face.shininess as f32;
+            fast.smallest_specular_base[k] = smallest_base(face.shininess, s);
             for (bound, value) in fast.term_bounds.iter_mut().zip([a, d, s]) {
                 *bound = bound.max(value);
             }
         }
         fast.spot_term_bounds = fast.term_bounds.map(|b| b * fast.spot_exponent as f32);
+        fast.smallest_spot_base = smallest_base(fast.spot_exponent, fast.term_bounds.iter().sum());
         Some(fast)
     }
 }
@@ -476,5 +497,35 @@ impl RefusedLanes {
             }
         }
         self.input.len = 0;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::smallest_base;
+
+    /// Below `smallest_base` a power's term is under 2^-40 whatever the light's brightness,
+    /// and at it the product of two powers (a spot factor and a specular one) is a normal
+    /// number for terms of ordinary brightness.
+    #[test]
+    fn powers_counted_as_zero_are_negligible_and_the_others_normal() {
+        for exponent in 2..=128 {
+            for bound in [0.0, 1e-3, 0.5, 1.0, 3.0, 1e3, 1e6, 1e12] {
+                let base = f64::from(smallest_base(exponent, bound));
+                let power = base.powi(exponent as i32);
+                assert!(
+                    power * 1024.0 * f64::from(bound) <= 2f64.powi(-40) * (1.0 + 1e-5),
+                    "{exponent} {bound}"
+                );
+                if bound <= 1e3 {
+                    assert!(
+                        power * power >= f64::from(f32::MIN_POSITIVE),
+                        "{exponent} {bound}"
+                    );
+                }
+            }
+        }
+        assert_eq!(smallest_base(0, 1.0), 0.0);
+        assert_eq!(smallest_base(1, 1.0), 0.0);
     }
 }
