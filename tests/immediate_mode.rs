@@ -331,3 +331,62 @@ fn primitives_across_batches_feed_back_the_same_on_any_thread_count() {
         assert_same_bits(&draw(threads), &one, &format!("{threads} threads"));
     }
 }
+
+/// Points the helper thread lights it also lays out (feedback values, or the depths of
+/// selection hits): with a user clip plane culling about half of them, with a feedback
+/// buffer too small for them all, and in selection mode with a name per primitive, 1, 2 and
+/// 3 threads give the same values, counts and hit records.
+#[test]
+fn points_laid_out_by_the_helper_are_the_same_on_any_thread_count() {
+    let lengths = [1024, 3000, 4097, 700];
+    let draw = |ctx: &mut Context| {
+        let mut rng = Lcg(99);
+        for (p, &length) in lengths.iter().enumerate() {
+            ctx.load_name(p as u32).unwrap();
+            ctx.begin(GL_POINTS).unwrap();
+            for _ in 0..length {
+                ctx.normal(Vec3::new(rng.signed(), rng.signed(), rng.signed()));
+                let position = Vec4::new(rng.signed(), rng.signed(), rng.signed(), 1.0);
+                ctx.vertex(position);
+            }
+            ctx.end().unwrap();
+        }
+    };
+    let run = |threads: i32, mode: GLenum, size: i32| {
+        fflight::threads::set_threads(threads).unwrap();
+        let mut ctx = scene(3);
+        ctx.clip_plane(GL_CLIP_PLANE0, [1.0, 0.5, 0.0, 0.1])
+            .unwrap();
+        ctx.set_capability(GL_CLIP_PLANE0, true).unwrap();
+        if mode == GL_FEEDBACK {
+            ctx.feedback_buffer(size, GL_3D_COLOR, 1).unwrap();
+        } else {
+            ctx.select_buffer(size, 1).unwrap();
+        }
+        ctx.render_mode(mode).unwrap();
+        if mode == GL_SELECT {
+            ctx.init_names().unwrap();
+            ctx.push_name(0).unwrap();
+        }
+        draw(&mut ctx);
+        let (count, finished) = ctx.render_mode(GL_RENDER).unwrap();
+        fflight::threads::set_threads(0).unwrap();
+        let finished = finished.unwrap();
+        (count, finished.values, finished.hit_records)
+    };
+    for (mode, size) in [
+        (GL_FEEDBACK, 1 << 20),
+        (GL_FEEDBACK, 30_000),
+        (GL_SELECT, 64),
+    ] {
+        let one = run(1, mode, size);
+        assert!(one.0 != 0, "mode {mode:#x}, size {size}: something drawn");
+        for threads in [2, 3] {
+            let many = run(threads, mode, size);
+            let what = format!("mode {mode:#x}, size {size}, {threads} threads");
+            assert_eq!(many.0, one.0, "{what}: count");
+            assert_same_bits(&many.1, &one.1, &what);
+            assert_eq!(many.2, one.2, "{what}: hit records");
+        }
+    }
+}

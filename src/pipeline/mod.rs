@@ -173,6 +173,15 @@ impl Context {
         self.lit_blocks = Some(outputs);
     }
 
+    /// Where a thread without the context may lay out the draw's points (`points_sink`):
+    /// points not captured, in feedback or selection mode.
+    pub(crate) fn stream_points_sink(&self, stream: &DrawStream) -> Option<points::PointsSink> {
+        if stream.assembler.mode() != GL_POINTS || stream.capture.is_some() {
+            return None;
+        }
+        self.points_sink(stream.planes.clone())
+    }
+
     /// Streams a processed block's vertices into the draw, in order.
     pub(crate) fn stream_lit_block(&mut self, stream: &mut DrawStream, output: &OutputBlock) {
         if stream.assembler.mode() == GL_POINTS && stream.capture.is_none() {

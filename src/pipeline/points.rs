@@ -50,14 +50,56 @@ fn fill_runs(fetch: &ArrayFetch, inputs: &mut [InputBlock], start: usize, end: u
     }
 }
 
-/// A chunk's results: its feedback values (the first `len` of `values`, which has room for
-/// every point of a chunk once a chunk was run into it), or the extreme depths of its
-/// selection hits.
-#[derive(Default)]
-struct ChunkPoints {
+/// Lit points laid out away from the context, by another thread, for the calling thread to
+/// append in turn (`Context::append_points`): their feedback values (the first `len` of
+/// `values`), or the extreme depths of their selection hits.
+#[derive(Debug, Default)]
+pub(crate) struct LaidOutPoints {
     values: Vec<f32>,
     len: usize,
     hits: Option<(f32, f32)>,
+}
+
+/// Where lit points go in feedback or selection mode, for a thread without the context: the
+/// viewport, the clip planes, and the feedback layout (`None` in selection mode).
+#[derive(Clone, Debug)]
+pub(crate) struct PointsSink {
+    viewport: ViewportMap,
+    planes: ClipPlanes,
+    layout: Option<FeedbackLayout>,
+}
+
+impl PointsSink {
+    /// Empties `out` for the points of up to `blocks` blocks. Its room is made at its first
+    /// use, not per block.
+    pub(crate) fn clear(&self, out: &mut LaidOutPoints, blocks: usize) {
+        out.len = 0;
+        out.hits = None;
+        if let Some(layout) = &self.layout {
+            out.values
+                .resize(blocks * LANES * layout.point_values(), 0.0);
+        }
+    }
+
+    /// Appends the drawn points of `block` (front colors) to `out`: the same values, in the
+    /// same order, as `Context::feedback_points`.
+    pub(crate) fn lay_out(&self, block: &OutputBlock, out: &mut LaidOutPoints) {
+        let (visible, window) = visible_points(&self.viewport, &self.planes, block);
+        match &self.layout {
+            Some(layout) => {
+                let arrays = [&window, &block.front_primary, &block.tex_coord];
+                out.len += layout.encode_points(&visible, arrays, &mut out.values[out.len..]);
+            }
+            None => {
+                for lane in (0..LANES).filter(|&lane| visible[lane]) {
+                    let z = window[2][lane];
+                    let (min, max) = out.hits.get_or_insert((z, z));
+                    *min = min.min(z);
+                    *max = max.max(z);
+                }
+            }
+        }
+    }
 }
 
 /// What every chunk of a draw shares.
@@ -67,10 +109,7 @@ struct PointsDraw<'a> {
     template: InputBlock,
     first: usize,
     count: usize,
-    viewport: ViewportMap,
-    planes: ClipPlanes,
-    /// `None` in selection mode.
-    layout: Option<FeedbackLayout>,
+    sink: PointsSink,
 }
 
 impl PointsDraw<'_> {
@@ -95,33 +134,12 @@ impl PointsDraw<'_> {
         }
     }
 
-    /// Chunk `chunk`'s points into `out`, for the calling thread to append in turn.
-    fn run_into(&self, chunk: usize, out: &mut ChunkPoints) {
-        out.len = 0;
-        out.hits = None;
-        if let Some(layout) = &self.layout {
-            // Sized at an output's first chunk, not per block: outputs never run into (most
-            // of the calling thread's, which lays its own chunks out in place) cost nothing.
-            out.values
-                .resize(CHUNK_BLOCKS * LANES * layout.point_values(), 0.0);
-        }
-        self.run(chunk, |block| {
-            let (visible, window) = visible_points(&self.viewport, &self.planes, block);
-            match &self.layout {
-                Some(layout) => {
-                    let arrays = [&window, &block.front_primary, &block.tex_coord];
-                    out.len += layout.encode_points(&visible, arrays, &mut out.values[out.len..]);
-                }
-                None => {
-                    for lane in (0..LANES).filter(|&lane| visible[lane]) {
-                        let z = window[2][lane];
-                        let (min, max) = out.hits.get_or_insert((z, z));
-                        *min = min.min(z);
-                        *max = max.max(z);
-                    }
-                }
-            }
-        });
+    /// Chunk `chunk`'s points into `out`, for the calling thread to append in turn. (Outputs
+    /// never run into, most of the calling thread's, which lays its own chunks out in place,
+    /// get no room.)
+    fn run_into(&self, chunk: usize, out: &mut LaidOutPoints) {
+        self.sink.clear(out, CHUNK_BLOCKS);
+        self.run(chunk, |block| self.sink.lay_out(block, out));
     }
 }
 
@@ -137,13 +155,8 @@ impl Context {
         (first, count): (usize, usize),
         threads: usize,
     ) -> bool {
-        let layout = match self.render_mode {
-            RenderMode::Render => return false,
-            RenderMode::Select => None,
-            RenderMode::Feedback => match self.feedback.layout {
-                Some(layout) => Some(layout),
-                None => return false,
-            },
+        let Some(sink) = self.points_sink(self.clip_planes()) else {
+            return false;
         };
         let draw = PointsDraw {
             derived,
@@ -151,30 +164,46 @@ impl Context {
             template: *template,
             first,
             count,
-            viewport: self.raster.viewport_map(),
-            planes: self.clip_planes(),
-            layout,
+            sink,
         };
         let chunks = count.div_ceil(LANES * CHUNK_BLOCKS);
         in_order(
             chunks,
             threads - 1,
-            ChunkPoints::default,
+            LaidOutPoints::default,
             |k, out| draw.run_into(k, out),
             |step| match step {
                 // Every earlier chunk is appended: this one's points go straight in.
-                Step::Run(k) => draw.run(k, |block| self.feedback_points(&draw.planes, block)),
-                Step::Take(out) => {
-                    if let Some((min, max)) = out.hits {
-                        self.selection.hit(min);
-                        self.selection.hit(max);
-                    }
-                    if layout.is_some() {
-                        self.feedback.values_of(&out.values[..out.len]);
-                    }
-                }
+                Step::Run(k) => draw.run(k, |block| self.feedback_points(&draw.sink.planes, block)),
+                Step::Take(out) => self.append_points(out),
             },
         );
         true
+    }
+
+    /// Where points drawn with `planes` go, for threads without the context; `None` in
+    /// render mode, and in feedback mode without a buffer.
+    pub(crate) fn points_sink(&self, planes: ClipPlanes) -> Option<PointsSink> {
+        let layout = match self.render_mode {
+            RenderMode::Render => return None,
+            RenderMode::Select => None,
+            RenderMode::Feedback => Some(self.feedback.layout?),
+        };
+        Some(PointsSink {
+            viewport: self.raster.viewport_map(),
+            planes,
+            layout,
+        })
+    }
+
+    /// Appends points another thread laid out, as `feedback_points` would have.
+    pub(crate) fn append_points(&mut self, points: &LaidOutPoints) {
+        if let Some((min, max)) = points.hits {
+            self.selection.hit(min);
+            self.selection.hit(max);
+        }
+        if self.render_mode == RenderMode::Feedback {
+            self.feedback.values_of(&points.values[..points.len]);
+        }
     }
 }

@@ -28,6 +28,7 @@ use std::time::{Duration, Instant};
 use super::{HALF_BLOCKS, HalfBlocks, half_blocks};
 use crate::lighting::batch::{Faces, process_blocks};
 use crate::pipeline::block::{InputBlock, OutputBlock};
+use crate::pipeline::points::{LaidOutPoints, PointsSink};
 use crate::pipeline::vertex::DerivedState;
 
 /// Blocks per chunk, what a thread lights at a time: the batch engine's own group of blocks.
@@ -71,6 +72,10 @@ pub(crate) struct Offer {
     derived: Arc<DerivedState>,
     /// The faces whose colors the primitive reads.
     faces: Faces,
+    /// Where the helper lays out the points it lights, when it does.
+    points: Option<Arc<PointsSink>>,
+    /// The number of the primitive whose attributes the blocks hold.
+    primitive: u64,
     inputs: [HalfBlocks; 2],
 }
 
@@ -84,11 +89,12 @@ impl Offer {
     }
 }
 
-/// A chunk of a batch: who lights it, and what the helper lit.
+/// A chunk of a batch: who lights it, and what the helper lit (or laid out).
 #[derive(Debug)]
 struct Chunk {
     state: AtomicU64,
     outputs: Mutex<Box<[OutputBlock; CHUNK_BLOCKS]>>,
+    points: Mutex<LaidOutPoints>,
 }
 
 /// Room for one batch in flight.
@@ -121,6 +127,7 @@ impl Job {
                 chunks: std::array::from_fn(|_| Chunk {
                     state: AtomicU64::new(state(0, Phase::Application)),
                     outputs: Mutex::new(Box::new([OutputBlock::default(); CHUNK_BLOCKS])),
+                    points: Mutex::new(LaidOutPoints::default()),
                 }),
             }),
             offered: AtomicU64::new(0),
@@ -164,20 +171,32 @@ impl Offers {
     }
 }
 
-/// Offers `inputs` (every block full) to the helper thread, to light with `derived` for the
-/// colors of `faces`; `inputs` gets `spare` (or new blocks) in exchange, to fill again. The
-/// job's batches offered before and not collected must be fewer than `RING`. `None` when
+/// Offers `inputs` (every block full, with the attributes of primitive number `primitive`)
+/// to the helper thread, to light with `derived` for the colors of `faces` (and lay out into
+/// `points`, if given); `inputs` gets the blocks of a batch of `spare`, collected before (or
+/// new blocks, if the helper still holds them all) in exchange, to fill again. The job's
+/// batches offered before and not collected must be fewer than `RING`. Returns the offer, and
+/// whether the blocks given in exchange hold the same primitive's attributes. `None` when
 /// there is no helper (it could not be started): nothing is offered, `inputs` is unchanged.
 pub(crate) fn offer(
     job: &Arc<Job>,
-    derived: &Arc<DerivedState>,
-    faces: Faces,
-    inputs: &mut [HalfBlocks; 2],
-    spare: Option<[HalfBlocks; 2]>,
-) -> Option<Arc<Offer>> {
+    (derived, faces, points): (&Arc<DerivedState>, Faces, Option<Arc<PointsSink>>),
+    (inputs, primitive): (&mut [HalfBlocks; 2], u64),
+    spare: &mut Vec<Arc<Offer>>,
+) -> Option<(Arc<Offer>, bool)> {
     let helper = helper()?;
-    let fresh = spare.unwrap_or_else(|| [half_blocks(), half_blocks()]);
-    let offer = publish(job, derived, faces, std::mem::replace(inputs, fresh));
+    let reused = std::iter::from_fn(|| spare.pop()).find_map(|spare| Arc::try_unwrap(spare).ok());
+    let same_primitive = reused.as_ref().is_some_and(|r| r.primitive == primitive);
+    let fresh = reused.map_or_else(|| [half_blocks(), half_blocks()], |r| r.inputs);
+    let offer = Offer {
+        seq: job.offered.load(Ordering::Relaxed) + 1,
+        derived: derived.clone(),
+        faces,
+        points,
+        primitive,
+        inputs: std::mem::replace(inputs, fresh),
+    };
+    let offer = publish(job, offer);
     if !job.queued.swap(true, Ordering::SeqCst) {
         let mut mailbox = lock(&helper.mailbox);
         mailbox.push_back(job.clone());
@@ -185,23 +204,13 @@ pub(crate) fn offer(
     }
     // Costs a system call only when the helper sleeps.
     helper.thread.unpark();
-    Some(offer)
+    Some((offer, same_primitive))
 }
 
-/// Makes `inputs` the job's next batch, every chunk offered.
-fn publish(
-    job: &Job,
-    derived: &Arc<DerivedState>,
-    faces: Faces,
-    inputs: [HalfBlocks; 2],
-) -> Arc<Offer> {
-    let seq = job.offered.load(Ordering::Relaxed) + 1;
-    let offer = Arc::new(Offer {
-        seq,
-        derived: derived.clone(),
-        faces,
-        inputs,
-    });
+/// Makes `offer` the job's next batch, every chunk offered.
+fn publish(job: &Job, offer: Offer) -> Arc<Offer> {
+    let seq = offer.seq;
+    let offer = Arc::new(offer);
     let slot = job.slot(seq);
     for chunk in &slot.chunks {
         chunk
@@ -217,16 +226,24 @@ fn publish(
 /// thread lights it itself (the helper was descheduled: a chunk takes a few microseconds).
 const LONG_WAIT: Duration = Duration::from_micros(50);
 
-/// Streams the blocks of `offer`, a batch of `job`, in order through `stream`: those the
-/// helper lit, the others lit here in `scratch` (room for a chunk). Returns the batch's
-/// input blocks, to fill again, unless the helper still holds them.
+/// A chunk of a batch, as `collect` streams it.
+pub(crate) enum Lit<'a> {
+    /// Its blocks, lit.
+    Blocks(&'a [OutputBlock]),
+    /// Its points, which the helper lit and laid out.
+    Points(&'a LaidOutPoints),
+}
+
+/// Streams the chunks of `offer`, a batch of `job`, in order through `stream`: those the
+/// helper lit (or laid out), the others lit here in `scratch` (room for a chunk). Returns
+/// the batch, whose blocks a later offer fills again.
 pub(crate) fn collect(
     job: &Job,
     offer: Arc<Offer>,
     offers: &mut Offers,
     scratch: &mut [OutputBlock],
-    mut stream: impl FnMut(&OutputBlock),
-) -> Option<[HalfBlocks; 2]> {
+    mut stream: impl FnMut(Lit),
+) -> Arc<Offer> {
     let slot = job.slot(offer.seq);
     let mut lit_by_helper = 0;
     let mut in_time = true;
@@ -234,13 +251,17 @@ pub(crate) fn collect(
         match claim(chunk, offer.seq) {
             Claim::Lit => {
                 lit_by_helper += 1;
-                lock(&chunk.outputs).iter().for_each(&mut stream);
+                if offer.points.is_some() {
+                    stream(Lit::Points(&lock(&chunk.points)));
+                } else {
+                    stream(Lit::Blocks(&lock(&chunk.outputs)[..]));
+                }
             }
             Claim::Here { late } => {
                 in_time &= !late;
                 let outputs = &mut scratch[..CHUNK_BLOCKS];
                 offer.light(index, outputs);
-                outputs.iter().for_each(&mut stream);
+                stream(Lit::Blocks(outputs));
             }
         }
     }
@@ -251,7 +272,7 @@ pub(crate) fn collect(
             *held = None;
         }
     }
-    Arc::try_unwrap(offer).ok().map(|offer| offer.inputs)
+    offer
 }
 
 /// Who lights a chunk, as the application's thread collects it.
@@ -370,7 +391,16 @@ fn light_chunks(job: &Job, offer: &Offer, scratch: &mut Box<[OutputBlock; CHUNK_
             return;
         }
         offer.light(index, &mut scratch[..]);
-        std::mem::swap(&mut *lock(&chunk.outputs), scratch);
+        match &offer.points {
+            Some(sink) => {
+                let mut points = lock(&chunk.points);
+                sink.clear(&mut points, CHUNK_BLOCKS);
+                for block in scratch.iter() {
+                    sink.lay_out(block, &mut points);
+                }
+            }
+            None => std::mem::swap(&mut *lock(&chunk.outputs), scratch),
+        }
         // Fails if the application's thread tired of waiting and lit it too: it streams its
         // own, and the chunk's outputs (now ours) are not read.
         let _ = chunk.state.compare_exchange(
@@ -439,7 +469,15 @@ mod tests {
         let derived = ctx.shared_derived();
         let job = Job::new();
         // Not queued: the helper thread, if any, never sees this job.
-        let offer = publish(&job, &derived, Faces::Front, inputs());
+        let offer = Offer {
+            seq: 1,
+            derived: derived.clone(),
+            faces: Faces::Front,
+            points: None,
+            primitive: 1,
+            inputs: inputs(),
+        };
+        let offer = publish(&job, offer);
         let chunks = &job.slot(offer.seq).chunks;
         // The "helper" lit the last chunk, and began the one before and stalled.
         let helper_claims = |index: usize| {
@@ -465,12 +503,16 @@ mod tests {
         let mut scratch = vec![OutputBlock::default(); CHUNK_BLOCKS];
         let mut streamed = Vec::new();
         let waiting = Instant::now();
-        let returned = collect(&job, offer, &mut offers, &mut scratch, |output| {
-            streamed.push(*output)
+        let returned = collect(&job, offer, &mut offers, &mut scratch, |lit| match lit {
+            Lit::Blocks(blocks) => streamed.extend_from_slice(blocks),
+            Lit::Points(_) => unreachable!("no points were offered to lay out"),
         });
         assert!(waiting.elapsed() >= LONG_WAIT);
         assert!(streamed == expected, "the stream differs from one thread's");
-        assert!(returned.is_some(), "the inputs come back to fill again");
+        assert!(
+            Arc::try_unwrap(returned).is_ok(),
+            "the inputs come back to fill again"
+        );
         assert!(
             !offers.offer_now(),
             "the late helper is offered the next batch"
