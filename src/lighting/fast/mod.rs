@@ -14,7 +14,8 @@
 //! discontinuity of the equation: n·L at 0, a spot cosine at its cutoff), or whose inputs lie
 //! outside single precision's comfortable range is *refused* and lit again by the scalar
 //! double-precision path. States the bound does not hold for (fractional exponents, negative
-//! colors that could cancel, huge matrices) never reach the kernel.
+//! colors that could cancel, huge matrices) never reach the kernel. A power whose term no
+//! color shows counts as 0 (`smallest_base`), so that no squaring reaches subnormal numbers.
 
 #[cfg(target_arch = "x86_64")]
 mod x86;
