@@ -51,9 +51,6 @@ pub struct PrimitiveInProgress {
     /// at a time), more where lighting is costly enough to share with a helper thread.
     pub(crate) batch: usize,
     pub(crate) stream: DrawStream,
-    /// Where the primitive's points go when a helper thread lays them out: points in feedback
-    /// or selection mode, not captured.
-    pub(crate) points: Option<Arc<crate::pipeline::points::PointsSink>>,
     /// Texture units 1 and up's coordinates of the pending vertices, while capture is on.
     pub(crate) units: Option<Box<crate::pipeline::units::PendingUnits>>,
 }

@@ -325,7 +325,6 @@ impl Context {
         }
         let stream = self.begin_stream(mode);
         let units = self.pending_units();
-        let points = self.stream_points_sink(&stream).map(Arc::new);
         let batch = if units.is_some() {
             1
         } else if self.vertices_observed() && self.lighting_worth_sharing() {
@@ -343,7 +342,6 @@ impl Context {
             filling: 0,
             batch,
             stream,
-            points,
             units,
         }));
         Ok(())
@@ -472,7 +470,9 @@ impl Context {
             let pending = &mut primitive.pending;
             let job = pending.job.get_or_insert_with(helper::Job::new);
             let faces = primitive.stream.faces();
-            let lighting = (&derived, faces, primitive.points.clone());
+            // Points the helper lays out too (made per batch: a glBegin costs nothing more).
+            let points = self.stream_points_sink(&primitive.stream).map(Arc::new);
+            let lighting = (&derived, faces, points);
             let inputs = (&mut pending.halves, pending.primitive);
             if let Some((offer, same_primitive)) =
                 helper::offer(job, lighting, inputs, &mut pending.spare)
