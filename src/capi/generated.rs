@@ -14,6 +14,7 @@ use crate::state::rasterization::point_param_count;
 use crate::state::light::light_param_count;
 use crate::state::light_model::light_model_param_count;
 use crate::state::material::material_param_count;
+use crate::state::imaging::{color_table_param_count, convolution_param_count};
 use crate::error::GlError;
 use crate::commands::texture::SubImageArgs;
 use crate::state::texture::{tex_env_count, tex_parameter_count};
@@ -3602,7 +3603,7 @@ pub unsafe extern "C" fn glColorSubTable(target: GLenum, start: GLsizei, count: 
 pub unsafe extern "C" fn glColorTableParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
-        let params = unsafe { read(params, 4) };
+        let params = unsafe { read(params, color_table_param_count(pname)) };
         if ctx.record(|| TableCommand::glColorTableParameterfv { target, pname, params: params.to_vec() }.into()) {
             return Ok(());
         }
@@ -3616,7 +3617,7 @@ pub unsafe extern "C" fn glColorTableParameterfv(target: GLenum, pname: GLenum, 
 pub unsafe extern "C" fn glColorTableParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
-        let params = unsafe { read(params, 4) };
+        let params = unsafe { read(params, color_table_param_count(pname)) };
         if ctx.record(|| TableCommand::glColorTableParameteriv { target, pname, params: params.to_vec() }.into()) {
             return Ok(());
         }
@@ -3772,7 +3773,7 @@ pub extern "C" fn glConvolutionParameteri(target: GLenum, pname: GLenum, param: 
 pub unsafe extern "C" fn glConvolutionParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
-        let params = unsafe { read(params, if pname == GL_CONVOLUTION_BORDER_MODE { 1 } else { 4 }) };
+        let params = unsafe { read(params, convolution_param_count(pname)) };
         if ctx.record(|| TableCommand::glConvolutionParameterfv { target, pname, params: params.to_vec() }.into()) {
             return Ok(());
         }
@@ -3786,7 +3787,7 @@ pub unsafe extern "C" fn glConvolutionParameterfv(target: GLenum, pname: GLenum,
 pub unsafe extern "C" fn glConvolutionParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
     with_context(|ctx| {
         // SAFETY: the caller's guarantee, forwarded.
-        let params = unsafe { read(params, if pname == GL_CONVOLUTION_BORDER_MODE { 1 } else { 4 }) };
+        let params = unsafe { read(params, convolution_param_count(pname)) };
         if ctx.record(|| TableCommand::glConvolutionParameteriv { target, pname, params: params.to_vec() }.into()) {
             return Ok(());
         }

@@ -296,6 +296,43 @@ pub fn color_table_target(target: GLenum) -> GlResult<(usize, bool)> {
     }
 }
 
+/// How many values glColorTableParameter{if}v reads for `pname`: 4 for the scale and the
+/// bias, 0 for any other pname (GL_INVALID_ENUM, which reads nothing).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::imaging::color_table_param_count};
+/// assert_eq!(color_table_param_count(GL_COLOR_TABLE_BIAS), 4);
+/// assert_eq!(color_table_param_count(GL_COLOR_TABLE_WIDTH), 0); // a query's pname
+/// ```
+pub fn color_table_param_count(pname: GLenum) -> usize {
+    match pname {
+        GL_COLOR_TABLE_SCALE | GL_COLOR_TABLE_BIAS => 4,
+        _ => 0,
+    }
+}
+
+/// How many values glConvolutionParameter{if}v reads for `pname`: 1 for the border mode, 4
+/// for the border color, the filter scale and the bias, 0 for any other pname
+/// (GL_INVALID_ENUM, which reads nothing).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::{gl::*, state::imaging::convolution_param_count};
+/// assert_eq!(convolution_param_count(GL_CONVOLUTION_BORDER_MODE), 1);
+/// assert_eq!(convolution_param_count(GL_CONVOLUTION_FILTER_SCALE), 4);
+/// assert_eq!(convolution_param_count(GL_CONVOLUTION_WIDTH), 0); // a query's pname
+/// ```
+pub fn convolution_param_count(pname: GLenum) -> usize {
+    match pname {
+        GL_CONVOLUTION_BORDER_MODE => 1,
+        GL_CONVOLUTION_BORDER_COLOR | GL_CONVOLUTION_FILTER_SCALE | GL_CONVOLUTION_FILTER_BIAS => 4,
+        _ => 0,
+    }
+}
+
 /// The convolution filter a target names, or GL_INVALID_ENUM.
 ///
 /// # Examples

@@ -1418,6 +1418,53 @@ static void check_pname_reads(void)
     fflDestroyContext(context);
 }
 
+/* The same commands, scalar forms too, given each enum of the header their table lacks as
+ * pname: each is refused with an error, reading nothing (a pointer form's buffer has no
+ * value before the guard page). */
+static long long unlisted_pnames_refused;
+static void check_unlisted_setter_pnames(void)
+{
+    FflContext *context = fflCreateContext();
+    int fn, t;
+    size_t i;
+    fflMakeCurrent(context);
+    for (fn = 0; fn < SWEEP_FUNCTION_COUNT; fn++) {
+        const struct sweep_function *f = &SWEEP_FUNCTIONS[fn];
+        const struct pname_query *q = pname_setter(f->name);
+        int at = pname_index(fn), in = f->count - 1;
+        if (!q || at < 0)
+            continue;
+        for (t = 0; t == 0 || (t < 4 && q->targets[t]); t++)
+            for (i = 0; i < SWEEP_ENUM_COUNT; i++) {
+                union sweep_arg a[MAX_PARAMS], ret;
+                GLenum pname = SWEEP_ENUMS[i];
+                char what[200];
+                if (pname_count(q, pname) != PNAME_UNKNOWN)
+                    continue;
+                drain_errors();
+                memset(a, 0, sizeof a);
+                a[0].i = q->targets[t];
+                a[at].i = pname;
+                if (f->params[in].kind == SWEEP_POINTER)
+                    a[in].p = slot_buffer(MAX_PARAMS, 0, f->params[in].size, 0, 0);
+                current_fn = fn;
+                memcpy(current_args, a, sizeof a);
+                current_situation = "unlisted pname";
+                f->call(a, &ret);
+                if (glGetError() != GL_NO_ERROR) {
+                    unlisted_pnames_refused++;
+                    continue;
+                }
+                snprintf(what, sizeof what, "accepted pname 0x%x, which its table lacks", pname);
+                printf("R7 %s(0x%x, 0x%x): %s\n", f->name, q->targets[t], pname, what);
+                fail("R7", what);
+            }
+    }
+    current_fn = -1;
+    fflMakeCurrent(main_context);
+    fflDestroyContext(context);
+}
+
 /* Makes the call in `situation`, checks the rules; returns the error it raised. */
 static GLenum make_call(int fn, enum situation situation)
 {
@@ -1579,9 +1626,12 @@ int main(void)
     start = now();
     check_pname_counts();
     check_pname_reads();
+    check_unlisted_setter_pnames();
     printf("pnames: %lld accepted (query, target, pname) calls of %d queries write their state-table "
-           "count; %lld (command, target, pname) calls of %d commands read no more than it; in %.2f s\n",
-           pnames_checked, pname_functions, pname_reads_checked, pname_setter_functions, now() - start);
+           "count; %lld (command, target, pname) calls of %d commands read no more than it, "
+           "%lld with a pname their table lacks refused; in %.2f s\n",
+           pnames_checked, pname_functions, pname_reads_checked, pname_setter_functions,
+           unlisted_pnames_refused, now() - start);
 
     /* Every function, every situation, `rounds` argument draws each. */
     start = now();
