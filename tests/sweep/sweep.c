@@ -1375,90 +1375,88 @@ static void check_pname_counts(void)
     drain_errors();
 }
 
-/* The commands setting a pname's values, each pname of their tables with exactly its count
- * of (hostile) values against the guard page, in a context of their own: a read past the
- * count faults; the const buffer must stay unchanged (R2). */
-static long long pname_reads_checked;
+/* The commands setting a pname's values, in a context of their own. Each pname of their
+ * tables with exactly its count of (hostile) values against the guard page: a read past the
+ * count faults; the const buffer must stay unchanged (R2). Each enum of the header their
+ * table lacks, scalar forms too: refused with an error, reading nothing (a pointer form's
+ * buffer has no value before the guard page). */
+static long long pname_reads_checked, unlisted_pnames_refused;
 static int pname_setter_functions;
-static void check_pname_reads(void)
+
+/* Setter fn (first argument `target`, pname argument `at`) with each pname of its table. */
+static void check_setter_reads(int fn, const struct pname_query *q, GLenum target, int at)
 {
-    FflContext *context = fflCreateContext();
-    int fn, t;
-    size_t i;
-    fflMakeCurrent(context);
-    for (fn = 0; fn < SWEEP_FUNCTION_COUNT; fn++) {
-        const struct sweep_function *f = &SWEEP_FUNCTIONS[fn];
-        const struct pname_query *q = pname_setter(f->name);
-        int at = pname_index(fn), in = f->count - 1;
-        if (!q || at < 0 || f->params[in].kind != SWEEP_POINTER)
-            continue;
-        pname_setter_functions++;
-        for (t = 0; t == 0 || (t < 4 && q->targets[t]); t++)
-            for (i = 0; i < q->size; i++) {
-                union sweep_arg a[MAX_PARAMS], ret;
-                size_t e = f->params[in].size;
-                GLenum error;
-                drain_errors();
-                memset(a, 0, sizeof a);
-                a[0].i = q->targets[t];
-                a[at].i = q->table[i].pname;
-                a[in].p = slot_buffer(MAX_PARAMS, (size_t)q->table[i].count * e, e, 0, 0);
-                slot_save(MAX_PARAMS);
-                current_fn = fn;
-                memcpy(current_args, a, sizeof a);
-                current_situation = "every pname";
-                f->call(a, &ret);
-                error = glGetError();
-                slot_check(MAX_PARAMS, error != GL_NO_ERROR, "params");
-                pname_reads_checked++;
-            }
+    const struct sweep_function *f = &SWEEP_FUNCTIONS[fn];
+    int in = f->count - 1;
+    size_t e = f->params[in].size, i;
+    for (i = 0; i < q->size; i++) {
+        union sweep_arg a[MAX_PARAMS], ret;
+        GLenum error;
+        drain_errors();
+        memset(a, 0, sizeof a);
+        a[0].i = target;
+        a[at].i = q->table[i].pname;
+        a[in].p = slot_buffer(MAX_PARAMS, (size_t)q->table[i].count * e, e, 0, 0);
+        slot_save(MAX_PARAMS);
+        current_fn = fn;
+        memcpy(current_args, a, sizeof a);
+        current_situation = "every pname";
+        f->call(a, &ret);
+        error = glGetError();
+        slot_check(MAX_PARAMS, error != GL_NO_ERROR, "params");
+        pname_reads_checked++;
     }
-    current_fn = -1;
-    fflMakeCurrent(main_context);
-    fflDestroyContext(context);
 }
 
-/* The same commands, scalar forms too, given each enum of the header their table lacks as
- * pname: each is refused with an error, reading nothing (a pointer form's buffer has no
- * value before the guard page). */
-static long long unlisted_pnames_refused;
-static void check_unlisted_setter_pnames(void)
+/* Setter fn with each enum of the header its table lacks. */
+static void check_setter_refusals(int fn, const struct pname_query *q, GLenum target, int at)
+{
+    const struct sweep_function *f = &SWEEP_FUNCTIONS[fn];
+    int in = f->count - 1;
+    size_t i;
+    for (i = 0; i < SWEEP_ENUM_COUNT; i++) {
+        union sweep_arg a[MAX_PARAMS], ret;
+        GLenum pname = SWEEP_ENUMS[i];
+        char what[200];
+        if (pname_count(q, pname) != PNAME_UNKNOWN)
+            continue;
+        drain_errors();
+        memset(a, 0, sizeof a);
+        a[0].i = target;
+        a[at].i = pname;
+        if (f->params[in].kind == SWEEP_POINTER)
+            a[in].p = slot_buffer(MAX_PARAMS, 0, f->params[in].size, 0, 0);
+        current_fn = fn;
+        memcpy(current_args, a, sizeof a);
+        current_situation = "unlisted pname";
+        f->call(a, &ret);
+        if (glGetError() != GL_NO_ERROR) {
+            unlisted_pnames_refused++;
+            continue;
+        }
+        snprintf(what, sizeof what, "accepted pname 0x%x, which its table lacks", pname);
+        printf("R7 %s(0x%x, 0x%x): %s\n", f->name, target, pname, what);
+        fail("R7", what);
+    }
+}
+
+static void check_setter_pnames(void)
 {
     FflContext *context = fflCreateContext();
     int fn, t;
-    size_t i;
     fflMakeCurrent(context);
     for (fn = 0; fn < SWEEP_FUNCTION_COUNT; fn++) {
         const struct sweep_function *f = &SWEEP_FUNCTIONS[fn];
         const struct pname_query *q = pname_setter(f->name);
-        int at = pname_index(fn), in = f->count - 1;
+        int at = pname_index(fn), pointer = f->params[f->count - 1].kind == SWEEP_POINTER;
         if (!q || at < 0)
             continue;
-        for (t = 0; t == 0 || (t < 4 && q->targets[t]); t++)
-            for (i = 0; i < SWEEP_ENUM_COUNT; i++) {
-                union sweep_arg a[MAX_PARAMS], ret;
-                GLenum pname = SWEEP_ENUMS[i];
-                char what[200];
-                if (pname_count(q, pname) != PNAME_UNKNOWN)
-                    continue;
-                drain_errors();
-                memset(a, 0, sizeof a);
-                a[0].i = q->targets[t];
-                a[at].i = pname;
-                if (f->params[in].kind == SWEEP_POINTER)
-                    a[in].p = slot_buffer(MAX_PARAMS, 0, f->params[in].size, 0, 0);
-                current_fn = fn;
-                memcpy(current_args, a, sizeof a);
-                current_situation = "unlisted pname";
-                f->call(a, &ret);
-                if (glGetError() != GL_NO_ERROR) {
-                    unlisted_pnames_refused++;
-                    continue;
-                }
-                snprintf(what, sizeof what, "accepted pname 0x%x, which its table lacks", pname);
-                printf("R7 %s(0x%x, 0x%x): %s\n", f->name, q->targets[t], pname, what);
-                fail("R7", what);
-            }
+        pname_setter_functions += pointer;
+        for (t = 0; t == 0 || (t < 4 && q->targets[t]); t++) {
+            if (pointer)
+                check_setter_reads(fn, q, q->targets[t], at);
+            check_setter_refusals(fn, q, q->targets[t], at);
+        }
     }
     current_fn = -1;
     fflMakeCurrent(main_context);
@@ -1625,8 +1623,7 @@ int main(void)
         check_get_forms(SWEEP_ENUMS[i]);
     start = now();
     check_pname_counts();
-    check_pname_reads();
-    check_unlisted_setter_pnames();
+    check_setter_pnames();
     printf("pnames: %lld accepted (query, target, pname) calls of %d queries write their state-table "
            "count; %lld (command, target, pname) calls of %d commands read no more than it, "
            "%lld with a pname their table lacks refused; in %.2f s\n",
