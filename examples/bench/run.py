@@ -98,10 +98,9 @@ def rounds(osmesa, fflight, scene, vertices):
             medians.append(None)
             continue
         line = dict(results[binary][-1])
-        line["ns_per_vertex"] = statistics.median(r["ns_per_vertex"] for r in results[binary])
-        if "ns_per_triangle" in line:
-            line["ns_per_triangle"] = statistics.median(
-                r["ns_per_triangle"] for r in results[binary])
+        for key in ("ns_per_vertex", "ns_per_triangle"):
+            if key in line:
+                line[key] = statistics.median(r[key] for r in results[binary])
         medians.append(line)
     each = [o["ns_per_vertex"] / f["ns_per_vertex"]
             for o, f in zip(results[osmesa], results[fflight]) if o and f]

@@ -472,11 +472,15 @@ impl Context {
             let faces = primitive.stream.faces();
             // Points the helper lays out too (made per batch: a glBegin costs nothing more).
             let points = self.stream_points_sink(&primitive.stream).map(Arc::new);
-            let lighting = (&derived, faces, points);
-            let inputs = (&mut pending.halves, pending.primitive);
-            if let Some((offer, same_primitive)) =
-                helper::offer(job, lighting, inputs, &mut pending.spare)
-            {
+            if let Some((offer, same_primitive)) = helper::offer(
+                job,
+                &derived,
+                faces,
+                points,
+                &mut pending.halves,
+                pending.primitive,
+                &mut pending.spare,
+            ) {
                 pending.in_flight.push_back(offer);
                 // The blocks now pending are those of an earlier batch: of this primitive,
                 // every one has its attributes (a batch is offered full).

@@ -180,8 +180,11 @@ impl Offers {
 /// there is no helper (it could not be started): nothing is offered, `inputs` is unchanged.
 pub(crate) fn offer(
     job: &Arc<Job>,
-    (derived, faces, points): (&Arc<DerivedState>, Faces, Option<Arc<PointsSink>>),
-    (inputs, primitive): (&mut [HalfBlocks; 2], u64),
+    derived: &Arc<DerivedState>,
+    faces: Faces,
+    points: Option<Arc<PointsSink>>,
+    inputs: &mut [HalfBlocks; 2],
+    primitive: u64,
     spare: &mut Vec<Arc<Offer>>,
 ) -> Option<(Arc<Offer>, bool)> {
     let helper = helper()?;

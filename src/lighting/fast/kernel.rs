@@ -527,8 +527,8 @@ fn add_light<
     let shininess = faces[0].shininess;
     let shared = if TWO_SIDE && shininess > 0 && faces[1].shininess == shininess {
         let [front, back] = light.smallest_specular_base;
-        let small = n_dot_h.abs().lt(F::splat(front.min(back)));
-        Some(power_and_below(n_dot_h.abs(), shininess, small))
+        let base = n_dot_h.abs();
+        Some(power_and_below(base, shininess, base.lt(F::splat(front.min(back)))))
     } else {
         None
     };
