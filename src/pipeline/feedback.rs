@@ -1,6 +1,6 @@
 //! Feedback mode (§5.3): tokens and vertex values collected for glRenderMode to return.
 
-use glam::Vec4;
+use glam::{Mat4, Vec4};
 use multiversion::multiversion;
 
 use crate::error::{GlError, GlResult};
@@ -61,33 +61,67 @@ pub(crate) fn encode_lane(
 
 /// Lays out the points of a block's `[window, color, tex_coord]` whose lanes are `visible`
 /// as feedback does (GL_POINT_TOKEN, then the values of `FeedbackBuffer::vertex`); returns
-/// how many values it wrote. Z, W, COLOR and TEXTURE are the layout's. Every lane is written
-/// and only the visible ones kept, so the loop does not branch.
+/// how many values it wrote. Z, W, COLOR and TEXTURE are the layout's; WIDTH (8 or 16) is at
+/// least its values per point. The block's values, a column per value, are turned into a row
+/// per point at once: a transposition the compiler does in vector shuffles, where a lane's
+/// values stored one by one take a store each.
 #[inline(always)]
-fn encode_points<const Z: bool, const W: bool, const COLOR: bool, const TEXTURE: bool>(
+fn encode_points<
+    const Z: bool,
+    const W: bool,
+    const COLOR: bool,
+    const TEXTURE: bool,
+    const WIDTH: usize,
+>(
     visible: &[bool; LANES],
-    arrays: [&Lanes4; 3],
+    [window, color, tex_coord]: [&Lanes4; 3],
     out: &mut [f32],
 ) -> usize {
     // A constant, so that the copies below compile to the layout's moves.
     let per_point = 3 + Z as usize + W as usize + 4 * COLOR as usize + 4 * TEXTURE as usize;
+    // Each value's column at an offset the layout fixes, so that every copy is constant.
+    let (z, w) = (3, 3 + Z as usize);
+    let color_at = w + W as usize;
+    let tex_coord_at = color_at + 4 * COLOR as usize;
+    let mut columns = [[GL_POINT_TOKEN as f32; LANES]; WIDTH];
+    columns[1] = window[0];
+    columns[2] = window[1];
+    if Z {
+        columns[z] = window[2];
+    }
+    if W {
+        columns[w] = window[3];
+    }
+    if COLOR {
+        columns[color_at..color_at + 4].copy_from_slice(color);
+    }
+    if TEXTURE {
+        columns[tex_coord_at..tex_coord_at + 4].copy_from_slice(tex_coord);
+    }
+    // Four values of four points at a time: a 4 x 4 transposition, which glam does in a few
+    // shuffles (the compiler turns a transposition written lane by lane into one move per
+    // value).
+    let mut points = [[0.0; WIDTH]; LANES];
+    for values in (0..WIDTH).step_by(4) {
+        for lanes in (0..LANES).step_by(4) {
+            let column = |k: usize| Vec4::from_slice(&columns[values + k][lanes..]);
+            let rows = Mat4::from_cols(column(0), column(1), column(2), column(3)).transpose();
+            for k in 0..4 {
+                rows.col(k).write_to_slice(&mut points[lanes + k][values..]);
+            }
+        }
+    }
     if visible.iter().all(|&v| v) {
-        // Every point drawn (the usual block): each at a constant offset, written once.
-        let out = &mut out[..LANES * per_point];
-        for (lane, point) in out.chunks_exact_mut(per_point).enumerate() {
-            let mut vertex = [0.0; MAX_VERTEX_VALUES];
-            encode_lane([Z, W, COLOR, TEXTURE], lane, arrays, &mut vertex);
-            point[0] = GL_POINT_TOKEN as f32;
-            point[1..].copy_from_slice(&vertex[..per_point - 1]);
+        // Every point drawn (the usual block): each at a constant offset.
+        let rooms = out[..LANES * per_point].chunks_exact_mut(per_point);
+        for (room, point) in rooms.zip(&points) {
+            room.copy_from_slice(&point[..per_point]);
         }
         return LANES * per_point;
     }
+    // Every lane written, only the visible ones kept: the loop does not branch.
     let mut n = 0;
-    for (lane, &visible) in visible.iter().enumerate() {
-        let mut point = [GL_POINT_TOKEN as f32; MAX_POINT_VALUES];
-        let mut vertex = [0.0; MAX_VERTEX_VALUES];
-        encode_lane([Z, W, COLOR, TEXTURE], lane, arrays, &mut vertex);
-        point[1..].copy_from_slice(&vertex);
+    for (point, &visible) in points.iter().zip(visible) {
         out[n..n + per_point].copy_from_slice(&point[..per_point]);
         n += per_point * usize::from(visible);
     }
@@ -104,15 +138,17 @@ fn encode_points_of_layout(
     out: &mut [f32],
 ) -> usize {
     match (layout.z, layout.w, layout.color, layout.texture) {
-        (false, ..) => encode_points::<false, false, false, false>(visible, arrays, out),
+        (false, ..) => encode_points::<false, false, false, false, 8>(visible, arrays, out),
         (true, false, false, false) => {
-            encode_points::<true, false, false, false>(visible, arrays, out)
+            encode_points::<true, false, false, false, 8>(visible, arrays, out)
         }
         (true, false, true, false) => {
-            encode_points::<true, false, true, false>(visible, arrays, out)
+            encode_points::<true, false, true, false, 8>(visible, arrays, out)
         }
-        (true, false, true, true) => encode_points::<true, false, true, true>(visible, arrays, out),
-        _ => encode_points::<true, true, true, true>(visible, arrays, out),
+        (true, false, true, true) => {
+            encode_points::<true, false, true, true, 16>(visible, arrays, out)
+        }
+        _ => encode_points::<true, true, true, true, 16>(visible, arrays, out),
     }
 }
 

@@ -20,8 +20,10 @@ use crate::state::raster::ViewportMap;
 /// Blocks per chunk: 2048 points, whose feedback values (at most 13 each) take about 100 KiB.
 const CHUNK_BLOCKS: usize = 256;
 
-/// Blocks lit at a time: even, so the widest kernel takes them two by two.
-const LIT_BLOCKS: usize = 16;
+/// Blocks lit at a time: even, so the widest kernel takes them two by two; and few, so that
+/// the lit blocks are still in the first-level cache when they are laid out (16 were 5%
+/// slower).
+const LIT_BLOCKS: usize = 4;
 
 /// The window coordinates of a lit block's points, and which of them are drawn: inside the
 /// view volume and every enabled user clip plane (§2.12), and among the block's `len`.
