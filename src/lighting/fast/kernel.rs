@@ -158,6 +158,9 @@ pub(super) fn process_blocks(
     let count = inputs.len().min(outputs.len()).min(refused.len());
     debug_assert!(count.is_multiple_of(BLOCKS));
     let two_side = state.two_side && faces == Faces::Both;
+    // The back colors are left unwritten when only the front's are read: a store each, which
+    // a short kernel waits on.
+    let back = faces == Faces::Both;
     let groups = inputs[..count]
         .chunks_exact(BLOCKS)
         .zip(outputs[..count].chunks_exact_mut(BLOCKS))
@@ -167,11 +170,11 @@ pub(super) fn process_blocks(
         let mut outs = outs.iter_mut();
         let outs: Outputs = std::array::from_fn(|_| outs.next().expect("BLOCKS outputs"));
         let bits = match (state.lit, two_side, state.local_viewer) {
-            (false, _, _) => group_of::<false, false, false>(state, ins, outs),
-            (true, false, false) => group_of::<true, false, false>(state, ins, outs),
-            (true, false, true) => group_of::<true, false, true>(state, ins, outs),
-            (true, true, false) => group_of::<true, true, false>(state, ins, outs),
-            (true, true, true) => group_of::<true, true, true>(state, ins, outs),
+            (false, _, _) => group_of::<false, false, false>(state, ins, outs, back),
+            (true, false, false) => group_of::<true, false, false>(state, ins, outs, back),
+            (true, false, true) => group_of::<true, false, true>(state, ins, outs, back),
+            (true, true, false) => group_of::<true, true, false>(state, ins, outs, back),
+            (true, true, true) => group_of::<true, true, true>(state, ins, outs, back),
         };
         for (k, (refused, input)) in refused.iter_mut().zip(ins).enumerate() {
             *refused = bits.block_bits(k) & ((1u32 << input.len) - 1) as u8;
@@ -293,6 +296,7 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
     state: &FastState,
     ins: Inputs,
     mut outs: Outputs,
+    back: bool,
 ) -> Mask {
     let object = load4!(ins, position);
     let mut refused = Mask::none();
@@ -327,8 +331,10 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
         let (primary, secondary) = (clamp4(color), clamp4(secondary));
         store4!(primary, outs, front_primary);
         store4!(secondary, outs, front_secondary);
-        store4!(primary, outs, back_primary);
-        store4!(secondary, outs, back_secondary);
+        if back {
+            store4!(primary, outs, back_primary);
+            store4!(secondary, outs, back_secondary);
+        }
         return refused;
     }
     if state.tracks_color {
@@ -423,7 +429,7 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
             store4!(primary, outs, front_primary);
             store4!(secondary, outs, front_secondary);
         }
-        if face == 1 || !TWO_SIDE {
+        if face == 1 || (!TWO_SIDE && back) {
             store4!(primary, outs, back_primary);
             store4!(secondary, outs, back_secondary);
         }
