@@ -176,6 +176,35 @@ fn read_floats_of<const N: usize>(
     }
 }
 
+/// The lanes of `block` that an array of `kind` read as floats fills; `None` for the edge
+/// flag, fog coordinate and color index arrays.
+fn float_lanes(kind: ArrayKind, block: &mut InputBlock) -> Option<&mut [LanesF32]> {
+    match kind {
+        ArrayKind::Vertex => Some(&mut block.position),
+        ArrayKind::Normal => Some(&mut block.normal),
+        ArrayKind::Color => Some(&mut block.color),
+        ArrayKind::TexCoord => Some(&mut block.tex_coord),
+        ArrayKind::SecondaryColor => Some(&mut block.secondary_color),
+        ArrayKind::EdgeFlag | ArrayKind::FogCoord | ArrayKind::Index => None,
+    }
+}
+
+/// Elements `first..first + len` of `source`, an array of `size` floats, into `out`; the
+/// components it lacks are (z, w) = (0, 1) (§2.8).
+#[inline(always)]
+fn read_float_run(
+    source: &ArraySource,
+    size: usize,
+    first: usize,
+    len: usize,
+    out: &mut [LanesF32],
+) {
+    read_floats(source.bytes, (size, source.stride), first, len, out);
+    for (c, component) in out.iter_mut().enumerate().skip(size) {
+        *component = [if c == 3 { 1.0 } else { 0.0 }; LANES];
+    }
+}
+
 /// The enabled arrays of a draw, ready to fill blocks.
 pub struct ArrayFetch<'a> {
     base: usize,
@@ -315,6 +344,45 @@ impl<'a> ArrayFetch<'a> {
         });
     }
 
+    /// `fill_run` for consecutive blocks: `inputs[k]` gets the elements from
+    /// `first + k * LANES` on, up to `end`. When every array is read as floats (or not at
+    /// all), they are read an array at a time, each over all the blocks, so that the choice
+    /// of array and converter is made once per call rather than once per block.
+    #[inline(always)]
+    pub fn fill_runs(&self, inputs: &mut [InputBlock], first: usize, end: usize) {
+        let by_array = ALL_KINDS
+            .into_iter()
+            .zip(&self.arrays)
+            .all(|(kind, source)| {
+                // Fog coordinates and color indices are not read (see `fill_with`).
+                let unread = matches!(kind, ArrayKind::FogCoord | ArrayKind::Index);
+                source.is_none_or(|s| s.floats.is_some() || unread)
+            });
+        for (k, input) in inputs.iter_mut().enumerate() {
+            let start = first + k * LANES;
+            if by_array {
+                input.len = LANES.min(end - start);
+            } else {
+                self.fill_run(input, start, LANES.min(end - start));
+            }
+        }
+        if !by_array {
+            return;
+        }
+        for (kind, source) in ALL_KINDS.into_iter().zip(&self.arrays) {
+            let (Some(source), Some(size)) = (source, source.and_then(|s| s.floats)) else {
+                continue;
+            };
+            for (k, input) in inputs.iter_mut().enumerate() {
+                let len = input.len;
+                if let Some(out) = float_lanes(kind, input) {
+                    let start = first + k * LANES - self.base;
+                    read_float_run(source, size, start, len, out);
+                }
+            }
+        }
+    }
+
     /// The arrays' elements into `block`'s `len` lanes: `locate(source, offsets)` gives the
     /// first element of a run of an array of floats (`read_floats`), or sets the elements'
     /// byte offsets for its converter.
@@ -331,23 +399,13 @@ impl<'a> ArrayFetch<'a> {
         for (kind, source) in ALL_KINDS.into_iter().zip(&self.arrays) {
             let Some(source) = source else { continue };
             let out: &mut [LanesF32] = match kind {
-                ArrayKind::Vertex => &mut block.position,
-                ArrayKind::Normal => &mut block.normal,
-                ArrayKind::Color => &mut block.color,
-                ArrayKind::TexCoord => &mut block.tex_coord,
-                ArrayKind::SecondaryColor => &mut block.secondary_color,
                 ArrayKind::EdgeFlag => &mut edge_flags,
                 // Fog coordinates and color indices reach nothing an RGBA vertex computes.
                 ArrayKind::FogCoord | ArrayKind::Index => continue,
+                _ => float_lanes(kind, block).expect("the other kinds have lanes"),
             };
             match (locate(source, &mut offsets), source.floats) {
-                (Some(first), Some(size)) => {
-                    read_floats(source.bytes, (size, source.stride), first, len, out);
-                    // Missing components are (z, w) = (0, 1) (§2.8).
-                    for (c, component) in out.iter_mut().enumerate().skip(size) {
-                        *component = [if c == 3 { 1.0 } else { 0.0 }; LANES];
-                    }
-                }
+                (Some(first), Some(size)) => read_float_run(source, size, first, len, out),
                 _ => (source.convert)(source.bytes, &offsets[..len], out),
             }
             if kind == ArrayKind::EdgeFlag {
@@ -411,6 +469,63 @@ mod tests {
                         assert_eq!(bits(&contiguous), bits(&one_by_one), "{what}");
                     }
                 }
+            }
+        }
+    }
+
+    /// Consecutive blocks filled together (`fill_runs`) hold what each filled alone
+    /// (`fill_run`) holds, to the bit: arrays of floats alone (read an array at a time, a fog
+    /// coordinate array among them), and with an array of bytes or edge flags (block by
+    /// block), over a last block that is not full.
+    #[test]
+    fn blocks_filled_together_equal_blocks_filled_alone() {
+        let array = |size, component_type| ClientArray {
+            enabled: true,
+            size,
+            component_type,
+            stride: 0,
+            address: 0,
+            buffer: 0,
+        };
+        let (base, elements) = (3, 5 * LANES - 3);
+        let bytes: Vec<u8> = (0..16 * (base + elements))
+            .map(|k| (k * 7 % 251) as u8 ^ 0x40)
+            .collect();
+        let (float3, float4, float1) = (array(3, GL_FLOAT), array(4, GL_FLOAT), array(1, GL_FLOAT));
+        let (bytes4, flags) = (array(4, GL_UNSIGNED_BYTE), array(1, GL_UNSIGNED_BYTE));
+        let kind = |kind| ALL_KINDS.iter().position(|&k| k == kind).unwrap();
+        let cases: [&[(ArrayKind, &ClientArray)]; 3] = [
+            &[
+                (ArrayKind::Vertex, &float3),
+                (ArrayKind::Normal, &float3),
+                (ArrayKind::Color, &float4),
+                (ArrayKind::FogCoord, &float1),
+            ],
+            &[(ArrayKind::Vertex, &float3), (ArrayKind::Color, &bytes4)],
+            &[(ArrayKind::Vertex, &float4), (ArrayKind::EdgeFlag, &flags)],
+        ];
+        for case in cases {
+            let mut arrays = [None; ARRAY_KINDS];
+            for &(k, array) in case {
+                arrays[kind(k)] = Some((array, &bytes[..]));
+            }
+            let fetch = ArrayFetch::new(base, arrays);
+            let first = base + 1;
+            let end = base + elements;
+            let mut together = [InputBlock::default(); 5];
+            fetch.fill_runs(&mut together, first, end);
+            for (k, block) in together.iter().enumerate() {
+                let start = first + k * LANES;
+                let mut alone = InputBlock::default();
+                fetch.fill_run(&mut alone, start, LANES.min(end - start));
+                let lanes = |b: &InputBlock| {
+                    format!(
+                        "{} {:?}",
+                        b.len,
+                        (0..b.len).map(|k| b.vertex(k)).collect::<Vec<_>>()
+                    )
+                };
+                assert_eq!(lanes(block), lanes(&alone), "{case:?}, block {k}");
             }
         }
     }

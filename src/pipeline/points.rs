@@ -46,10 +46,7 @@ pub(crate) fn visible_points(
 /// block: compiled for AVX2 where the CPU has it, as `visible_points` is.
 #[multiversion(targets("x86_64+avx2+fma+bmi1+bmi2+lzcnt+popcnt", "aarch64+neon"))]
 fn fill_runs(fetch: &ArrayFetch, inputs: &mut [InputBlock], start: usize, end: usize) {
-    for (k, input) in inputs.iter_mut().enumerate() {
-        let first = start + k * LANES;
-        fetch.fill_run(input, first, LANES.min(end - first));
-    }
+    fetch.fill_runs(inputs, start, end);
 }
 
 /// Lit points laid out away from the context, by another thread, for the calling thread to
