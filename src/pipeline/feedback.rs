@@ -380,7 +380,13 @@ impl FeedbackBuffer {
         match &mut self.storage {
             FeedbackStorage::Kept(kept) => kept.extend_from_slice(fitting),
             FeedbackStorage::Application(memory) => {
-                copy_short(&mut memory.as_mut_slice()[self.written..], fitting)
+                let to = &mut memory.as_mut_slice()[self.written..];
+                if fitting.len() > MAX_POINT_VALUES {
+                    // Another thread's chunk of points.
+                    super::streaming::copy_streaming(to, fitting);
+                } else {
+                    copy_short(to, fitting);
+                }
             }
         }
         self.written += fitting.len();

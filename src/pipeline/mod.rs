@@ -14,6 +14,7 @@ pub mod mesh;
 pub mod parallel;
 pub mod points;
 pub mod select;
+pub mod streaming;
 pub mod units;
 pub mod vertex;
 pub mod vertex_cache;
