@@ -466,3 +466,65 @@ fn threaded_draws_equal_one_thread() {
     }
     unsafe { fflSetThreads(0) };
 }
+
+/// Large glDrawArrays(GL_POINTS) into the application's feedback buffer, split into chunks
+/// that the threads lay out and copy into their places (`pipeline::points`): the one-thread
+/// buffer bit for bit, canaries past the count included, in every feedback layout, with
+/// points culled by the view volume and by user planes (so that each chunk lands below the
+/// place all-drawn points would take), and overflowing halfway.
+#[test]
+fn threaded_points_fill_the_buffer_as_one_thread() {
+    set_lit_state();
+    // 52,000 points: enough for three threads, 26 chunks.
+    let m = mesh(400, 130, 0, 0);
+    set_arrays(&m);
+    let n = m.positions.len() / 3;
+    let draw = || unsafe { glDrawArrays(GL_POINTS, 0, n as GLsizei) };
+    for user_planes in [false, true] {
+        apply(Config {
+            cull: None,
+            front_face: GL_CCW,
+            flat: false,
+            user_planes,
+        });
+        for kind in FEEDBACK_TYPES {
+            let run = |threads: i32| {
+                unsafe { fflSetThreads(threads) };
+                let all = feedback(kind, 14 * n, false, &draw);
+                let part = feedback(kind, all.0 as usize / 2 + 7, false, &draw);
+                (all, part)
+            };
+            let one = run(1);
+            assert!(one.0.0 > 0 && one.1.0 == -1, "{kind:#x}");
+            // GL_POINT_TOKEN and the vertex's values.
+            let per_point = match kind {
+                GL_2D => 3,
+                GL_3D => 4,
+                GL_3D_COLOR => 8,
+                GL_3D_COLOR_TEXTURE => 12,
+                _ => 13,
+            };
+            let drawn = one.0.0 / per_point;
+            assert_eq!(drawn * per_point, one.0.0, "{kind:#x}");
+            assert!(
+                drawn < n as i32 * 9 / 10,
+                "{kind:#x}: {drawn} of {n} points drawn"
+            );
+            for threads in [2, 3] {
+                let many = run(threads);
+                let what = format!("{kind:#x}, planes {user_planes}, {threads} threads");
+                assert!(
+                    many.0 == one.0,
+                    "{what}: {}",
+                    first_difference(&many.0, &one.0)
+                );
+                assert!(
+                    many.1 == one.1,
+                    "{what} overflow: {}",
+                    first_difference(&many.1, &one.1)
+                );
+            }
+        }
+    }
+    unsafe { fflSetThreads(0) };
+}

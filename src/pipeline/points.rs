@@ -8,9 +8,10 @@ use multiversion::multiversion;
 
 use super::block::{InputBlock, OutputBlock};
 use super::clip::ClipPlanes;
-use super::feedback::FeedbackLayout;
+use super::feedback::{FeedbackLayout, FeedbackStorage};
 use super::fetch::ArrayFetch;
 use super::parallel::{Step, in_order};
+use super::streaming::copy_streaming;
 use super::vertex::DerivedState;
 use crate::context::{Context, RenderMode};
 use crate::lighting::batch::{Faces, process_blocks};
@@ -52,11 +53,33 @@ fn fill_runs(fetch: &ArrayFetch, inputs: &mut [InputBlock], start: usize, end: u
 /// Lit points laid out away from the context, by another thread, for the calling thread to
 /// append in turn (`Context::append_points`): their feedback values (the first `len` of
 /// `values`), or the extreme depths of their selection hits.
+///
+/// A large draw into the application's memory gives each its place there instead
+/// (`destination`): its values are copied by the thread that next lays points out into it
+/// (`PointsSink::clear`), or when it is dropped, so that the copies are shared among the
+/// threads rather than all made by the calling thread.
 #[derive(Debug, Default)]
-pub(crate) struct LaidOutPoints {
+pub(crate) struct LaidOutPoints<'a> {
     values: Vec<f32>,
     len: usize,
     hits: Option<(f32, f32)>,
+    destination: Option<&'a mut [f32]>,
+}
+
+impl LaidOutPoints<'_> {
+    /// Copies the values to their destination, if they have one: the first as many as it
+    /// holds.
+    fn deliver(&mut self) {
+        if let Some(to) = self.destination.take() {
+            copy_streaming(to, &self.values[..to.len()]);
+        }
+    }
+}
+
+impl Drop for LaidOutPoints<'_> {
+    fn drop(&mut self) {
+        self.deliver();
+    }
 }
 
 /// Where lit points go in feedback or selection mode, for a thread without the context: the
@@ -72,6 +95,7 @@ impl PointsSink {
     /// Empties `out` for the points of up to `blocks` blocks. Its room is made at its first
     /// use, not per block.
     pub(crate) fn clear(&self, out: &mut LaidOutPoints, blocks: usize) {
+        out.deliver();
         out.len = 0;
         out.hits = None;
         if let Some(layout) = &self.layout {
@@ -140,6 +164,43 @@ impl PointsDraw<'_> {
         self.sink.clear(out, CHUNK_BLOCKS);
         self.run(chunk, |block| self.sink.lay_out(block, out));
     }
+
+    /// All `chunks` chunks on `helpers` helper threads and the calling thread, fed back into
+    /// `room`, the application's memory: each chunk's values get their place there in order,
+    /// and whichever thread reuses their output next (or drops it) copies them, so that the
+    /// calling thread does not make every copy. Returns how many values were written, and
+    /// whether some did not fit.
+    fn run_into_places(
+        &self,
+        chunks: usize,
+        helpers: usize,
+        mut room: &mut [f32],
+    ) -> (usize, bool) {
+        let (mut appended, mut overflowed) = (0, false);
+        let mut own = LaidOutPoints::default();
+        in_order(
+            chunks,
+            helpers,
+            LaidOutPoints::default,
+            |k, out| self.run_into(k, out),
+            |step| {
+                let out = match step {
+                    Step::Run(k) => {
+                        self.run_into(k, &mut own);
+                        &mut own
+                    }
+                    Step::Take(out) => out,
+                };
+                let fitting = out.len.min(room.len());
+                let (place, rest) = std::mem::take(&mut room).split_at_mut(fitting);
+                room = rest;
+                appended += fitting;
+                overflowed |= fitting < out.len;
+                out.destination = Some(place);
+            },
+        );
+        (appended, overflowed)
+    }
 }
 
 impl Context {
@@ -166,6 +227,16 @@ impl Context {
             sink,
         };
         let chunks = count.div_ceil(LANES * CHUNK_BLOCKS);
+        let feedback = &mut self.feedback;
+        if let (Some(_), FeedbackStorage::Application(memory)) =
+            (draw.sink.layout, &mut feedback.storage)
+        {
+            let room = &mut memory.as_mut_slice()[feedback.written..feedback.capacity];
+            let (appended, overflowed) = draw.run_into_places(chunks, threads - 1, room);
+            feedback.written += appended;
+            feedback.overflowed |= overflowed;
+            return true;
+        }
         in_order(
             chunks,
             threads - 1,

@@ -94,7 +94,7 @@ impl Offer {
 struct Chunk {
     state: AtomicU64,
     outputs: Mutex<Box<[OutputBlock; CHUNK_BLOCKS]>>,
-    points: Mutex<LaidOutPoints>,
+    points: Mutex<LaidOutPoints<'static>>,
 }
 
 /// Room for one batch in flight.
@@ -234,7 +234,7 @@ pub(crate) enum Lit<'a> {
     /// Its blocks, lit.
     Blocks(&'a [OutputBlock]),
     /// Its points, which the helper lit and laid out.
-    Points(&'a LaidOutPoints),
+    Points(&'a LaidOutPoints<'static>),
 }
 
 /// Streams the chunks of `offer`, a batch of `job`, in order through `stream`: those the
