@@ -382,7 +382,7 @@ impl FeedbackBuffer {
             FeedbackStorage::Application(memory) => {
                 let to = &mut memory.as_mut_slice()[self.written..];
                 if fitting.len() > MAX_POINT_VALUES {
-                    // Another thread's chunk of points.
+                    // A chunk another thread laid out (points, triangles).
                     super::streaming::copy_streaming(to, fitting);
                 } else {
                     copy_short(to, fitting);

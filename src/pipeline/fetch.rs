@@ -350,6 +350,7 @@ impl<'a> ArrayFetch<'a> {
     /// of array and converter is made once per call rather than once per block.
     #[inline(always)]
     pub fn fill_runs(&self, inputs: &mut [InputBlock], first: usize, end: usize) {
+        let start = |k: usize| first + k * LANES;
         let by_array = ALL_KINDS
             .into_iter()
             .zip(&self.arrays)
@@ -358,26 +359,22 @@ impl<'a> ArrayFetch<'a> {
                 let unread = matches!(kind, ArrayKind::FogCoord | ArrayKind::Index);
                 source.is_none_or(|s| s.floats.is_some() || unread)
             });
-        for (k, input) in inputs.iter_mut().enumerate() {
-            let start = first + k * LANES;
-            if by_array {
-                input.len = LANES.min(end - start);
-            } else {
-                self.fill_run(input, start, LANES.min(end - start));
-            }
-        }
         if !by_array {
+            for (k, input) in inputs.iter_mut().enumerate() {
+                self.fill_run(input, start(k), LANES.min(end - start(k)));
+            }
             return;
         }
+        for (k, input) in inputs.iter_mut().enumerate() {
+            input.len = LANES.min(end - start(k));
+        }
         for (kind, source) in ALL_KINDS.into_iter().zip(&self.arrays) {
-            let (Some(source), Some(size)) = (source, source.and_then(|s| s.floats)) else {
-                continue;
-            };
+            let Some(source) = source else { continue };
+            let Some(size) = source.floats else { continue };
             for (k, input) in inputs.iter_mut().enumerate() {
                 let len = input.len;
                 if let Some(out) = float_lanes(kind, input) {
-                    let start = first + k * LANES - self.base;
-                    read_float_run(source, size, start, len, out);
+                    read_float_run(source, size, start(k) - self.base, len, out);
                 }
             }
         }
