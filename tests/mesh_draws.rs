@@ -231,17 +231,21 @@ fn draw_elements(indices: &[u32]) {
     };
 }
 
-/// Where two results first differ, for the message.
-fn first_difference(a: &Result, b: &Result) -> String {
+/// Asserts that two draws gave the same count and buffer, bit for bit; else names the first
+/// value that differs, after `what`.
+fn assert_same(a: &Result, b: &Result, what: impl std::fmt::Display) {
+    if a == b {
+        return;
+    }
     match a.1.iter().zip(&b.1).position(|(x, y)| x != y) {
-        Some(i) => format!(
-            "counts {} and {}, value {i}: {} and {}",
+        Some(i) => panic!(
+            "{what}: counts {} and {}, value {i}: {} and {}",
             a.0,
             b.0,
             f32::from_bits(a.1[i]),
             f32::from_bits(b.1[i])
         ),
-        None => format!("counts {} and {}", a.0, b.0),
+        None => panic!("{what}: counts {} and {}", a.0, b.0),
     }
 }
 
@@ -261,11 +265,7 @@ fn mesh_path_equals_general_path() {
         let kind = FEEDBACK_TYPES[k % FEEDBACK_TYPES.len()];
         let fast = feedback(kind, size, false, &draw);
         let general = feedback(kind, size, true, &draw);
-        assert!(
-            fast == general,
-            "{config:?} type {kind:#x}: {}",
-            first_difference(&fast, &general)
-        );
+        assert_same(&fast, &general, format_args!("{config:?} type {kind:#x}"));
         let drawn = config.cull != Some(GL_FRONT_AND_BACK);
         assert_eq!(fast.0 > 0, drawn, "{config:?}: something is drawn");
         let fast = select(false, &draw);
@@ -317,11 +317,7 @@ fn overflow_is_the_same_on_both_paths() {
         for size in [0, 5, 23, 4001] {
             let fast = feedback(kind, size, false, &draw);
             let general = feedback(kind, size, true, &draw);
-            assert!(
-                fast == general,
-                "type {kind:#x} size {size}: {}",
-                first_difference(&fast, &general)
-            );
+            assert_same(&fast, &general, format_args!("type {kind:#x} size {size}"));
             assert_eq!(fast.0, -1, "type {kind:#x} size {size} overflows");
         }
     }
@@ -368,11 +364,7 @@ fn other_index_types_and_partial_triangles() {
         for (what, draw) in &draws {
             let fast = feedback(GL_3D_COLOR, 100_000, false, draw);
             let general = feedback(GL_3D_COLOR, 100_000, true, draw);
-            assert!(
-                fast == general,
-                "{what}, {drop} dropped: {}",
-                first_difference(&fast, &general)
-            );
+            assert_same(&fast, &general, format_args!("{what}, {drop} dropped"));
             assert!(fast.0 > 0);
         }
     }
@@ -418,11 +410,7 @@ fn mesh_path_equals_a_draw_of_the_vertices_in_order() {
         let in_order = feedback(GL_4D_COLOR_TEXTURE, size, false, &|| unsafe {
             glDrawArrays(GL_TRIANGLES, 0, m.indices.len() as GLsizei)
         });
-        assert!(
-            indexed == in_order,
-            "{config:?}: {}",
-            first_difference(&indexed, &in_order)
-        );
+        assert_same(&indexed, &in_order, format_args!("{config:?}"));
     }
 }
 
@@ -452,15 +440,15 @@ fn threaded_draws_equal_one_thread() {
     assert!(one.0.0 > 0 && one.1.0 == -1, "{config:?}");
     for threads in [2, 3] {
         let many = run(threads);
-        assert!(
-            many.0 == one.0,
-            "{config:?}, {threads} threads: {}",
-            first_difference(&many.0, &one.0)
+        assert_same(
+            &many.0,
+            &one.0,
+            format_args!("{config:?}, {threads} threads"),
         );
-        assert!(
-            many.1 == one.1,
-            "{config:?} overflow, {threads} threads: {}",
-            first_difference(&many.1, &one.1)
+        assert_same(
+            &many.1,
+            &one.1,
+            format_args!("{config:?} overflow, {threads} threads"),
         );
         assert_eq!(many.2, one.2, "{config:?} selection, {threads} threads");
     }
@@ -513,16 +501,8 @@ fn threaded_points_fill_the_buffer_as_one_thread() {
             for threads in [2, 3] {
                 let many = run(threads);
                 let what = format!("{kind:#x}, planes {user_planes}, {threads} threads");
-                assert!(
-                    many.0 == one.0,
-                    "{what}: {}",
-                    first_difference(&many.0, &one.0)
-                );
-                assert!(
-                    many.1 == one.1,
-                    "{what} overflow: {}",
-                    first_difference(&many.1, &one.1)
-                );
+                assert_same(&many.0, &one.0, &what);
+                assert_same(&many.1, &one.1, format_args!("{what} overflow"));
             }
         }
     }

@@ -157,9 +157,9 @@ impl PointsDraw<'_> {
         }
     }
 
-    /// Chunk `chunk`'s points into `out`, for the calling thread to append in turn. (Outputs
-    /// never run into, most of the calling thread's, which lays its own chunks out in place,
-    /// get no room.)
+    /// Chunk `chunk`'s points into `out`, for the calling thread to append in turn (`out`
+    /// first delivers the values it holds, if they have a place). An output gets its room at
+    /// its first chunk: one never run into costs nothing.
     fn run_into(&self, chunk: usize, out: &mut LaidOutPoints) {
         self.sink.clear(out, CHUNK_BLOCKS);
         self.run(chunk, |block| self.sink.lay_out(block, out));
