@@ -7,7 +7,7 @@
 
 use fflight::Context;
 use fflight::gl::*;
-use fflight::lighting::batch::{Faces, process_blocks, process_blocks_exact};
+use fflight::lighting::batch::{Faces, Reads, process_blocks, process_blocks_exact};
 use fflight::lighting::fast::{InstructionSet, kernel_blocks_on};
 use fflight::lighting::lanes::LANES;
 use fflight::pipeline::block::{InputBlock, OutputBlock};
@@ -607,8 +607,9 @@ fn fast_engine_is_within_1e5_of_the_scalar_path() {
 }
 
 /// Every instruction set the kernel is compiled for that this CPU has (whichever the engine
-/// would pick): the lanes each serves within 1e-5 of the scalar path, positions exact, and a
-/// block's results the same alone as paired with another (AVX-512 takes two at a time).
+/// would pick): the lanes each serves within 1e-5 of the scalar path, positions exact, a
+/// block's results the same alone as paired with another (AVX-512 takes two at a time), and
+/// the same without the eye coordinates.
 #[test]
 fn every_instruction_set_agrees_with_the_scalar_path() {
     let mut rng = Rng(777);
@@ -663,6 +664,24 @@ fn every_instruction_set_agrees_with_the_scalar_path() {
             );
             assert_eq!(alone_refused[0], refused[0], "{set:?} state {state}");
             assert_eq!(alone[0], outputs[0], "{set:?} state {state}");
+            // The eye coordinates unread (points and lines without user clip planes): the
+            // rest the same, to the bit.
+            let mut without_eye = [OutputBlock::default(); 3];
+            let mut without_eye_refused = [0u8; 3];
+            let reads = Reads { faces, eye: false };
+            kernel_blocks_on(
+                set,
+                &fast,
+                reads,
+                &inputs,
+                &mut without_eye,
+                &mut without_eye_refused,
+            );
+            assert_eq!(without_eye_refused, refused, "{set:?} state {state}");
+            for (mut block, with_eye) in without_eye.into_iter().zip(&outputs) {
+                block.eye = with_eye.eye;
+                assert_eq!(&block, with_eye, "{set:?} state {state}");
+            }
         }
     }
     eprintln!("lanes served: AVX2 {}, AVX-512 {}", served[0], served[1]);

@@ -1171,7 +1171,7 @@ impl Context {
             let threads = threads_for(count);
             if threads > 1
                 && mode == GL_POINTS
-                && stream.faces() == Faces::Front
+                && stream.reads().faces == Faces::Front
                 && self.draw_points_on_threads(&derived, fetch, &input, (first, count), threads)
             {
                 return self.end_stream(stream);
@@ -1182,8 +1182,8 @@ impl Context {
                     fetch.fill_run(input, start, LANES.min(first + count - start));
                 };
                 let blocks = count.div_ceil(LANES);
-                let faces = stream.faces();
-                light_in_order(&derived, faces, &input, blocks, threads - 1, fill, |lit| {
+                let reads = stream.reads();
+                light_in_order(&derived, reads, &input, blocks, threads - 1, fill, |lit| {
                     self.stream_lit_block(&mut stream, lit)
                 });
                 return self.end_stream(stream);
@@ -1220,7 +1220,7 @@ impl Context {
         let mut input = InputBlock::with_attribs(&self.current);
         let mut stream = self.begin_stream(mode);
         let mut cache = std::mem::take(&mut self.vertex_cache);
-        cache.start_draw(stream.faces());
+        cache.start_draw(stream.reads());
         indices.for_each(|index| {
             cache.push(index, (&derived, fetch, &mut input), |v| {
                 self.stream_vertex(&mut stream, v)

@@ -469,13 +469,13 @@ impl Context {
             let derived = self.shared_derived();
             let pending = &mut primitive.pending;
             let job = pending.job.get_or_insert_with(helper::Job::new);
-            let faces = primitive.stream.faces();
+            let reads = primitive.stream.reads();
             // Points the helper lays out too (made per batch: a glBegin costs nothing more).
             let points = self.stream_points_sink(&primitive.stream).map(Arc::new);
             if let Some((offer, same_primitive)) = helper::offer(
                 job,
                 &derived,
-                faces,
+                reads,
                 points,
                 &mut pending.halves,
                 pending.primitive,
@@ -542,11 +542,11 @@ impl Context {
             halves, outputs, ..
         } = &mut primitive.pending;
         let first = used.min(HALF_BLOCKS);
-        let faces = primitive.stream.faces();
-        process_blocks(derived, faces, &halves[0][..first], &mut outputs[..first]);
+        let reads = primitive.stream.reads();
+        process_blocks(derived, reads, &halves[0][..first], &mut outputs[..first]);
         if used > HALF_BLOCKS {
             let (_, second) = outputs.split_at_mut(HALF_BLOCKS);
-            process_blocks(derived, faces, &halves[1][..used - HALF_BLOCKS], second);
+            process_blocks(derived, reads, &halves[1][..used - HALF_BLOCKS], second);
         }
         for output in &outputs[..used] {
             self.stream_lit_block(&mut primitive.stream, output);

@@ -36,8 +36,34 @@ pub enum Faces {
     Front,
 }
 
+/// What the consumer of processed vertices reads of them besides their clip and texture
+/// coordinates: the colors of which faces, and whether the eye coordinates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Reads {
+    /// The faces whose colors are read.
+    pub faces: Faces,
+    /// Whether the eye coordinates are read (by user clip planes, capture, the raster
+    /// position). Unread, they are unspecified: the fast engine computes them only where
+    /// lighting needs them.
+    pub eye: bool,
+}
+
+/// Everything: both faces' colors and the eye coordinates.
+impl Default for Reads {
+    fn default() -> Reads {
+        Faces::Both.into()
+    }
+}
+
+/// The colors of `faces`, and the eye coordinates.
+impl From<Faces> for Reads {
+    fn from(faces: Faces) -> Reads {
+        Reads { faces, eye: true }
+    }
+}
+
 /// Processes `inputs` into `outputs` (pairwise; the shorter decides) with the state `derived`:
-/// transformation (§2.11) and lighting (§2.14.1) of every lane, for the colors of `faces`. Against
+/// transformation (§2.11) and lighting (§2.14.1) of every lane, for what `reads` says. Against
 /// `DerivedState::process` vertex by vertex: eye, clip and texture coordinates the same to the
 /// last bit, colors within 1e-5 (the fast kernel's bound is 5e-6).
 ///
@@ -81,14 +107,15 @@ pub enum Faces {
 /// ```
 pub fn process_blocks(
     derived: &DerivedState,
-    faces: Faces,
+    reads: impl Into<Reads>,
     inputs: &[InputBlock],
     outputs: &mut [OutputBlock],
 ) {
+    let reads = reads.into();
     let served = derived
         .fast
         .as_ref()
-        .is_some_and(|fast| super::fast::process_blocks(fast, derived, faces, inputs, outputs));
+        .is_some_and(|fast| super::fast::process_blocks(fast, derived, reads, inputs, outputs));
     if !served {
         process_blocks_exact(derived, inputs, outputs);
     }
@@ -406,7 +433,7 @@ fn process<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
     let eye = transform4(&transform.modelview, &object);
     out.len = input.len;
     out.eye = to_f32(eye);
-    out.clip = to_f32(transform4(&transform.projection, &eye));
+    out.clip = to_f32(transform4(&transform.object_to_clip, &object));
     if transform.tex_gen.is_some() {
         generate_tex_coords(transform, input, out, 0);
     } else {

@@ -24,7 +24,7 @@ use glam::Vec4;
 use crate::context::{Context, RenderMode};
 use crate::gl::*;
 use crate::lighting::FaceColors;
-use crate::lighting::batch::{Faces, process_blocks};
+use crate::lighting::batch::{Faces, Reads, process_blocks};
 use crate::lighting::lanes::LANES;
 use assembly::{Assembler, Primitive};
 use block::{InputBlock, OutputBlock};
@@ -96,17 +96,21 @@ pub struct DrawStream {
 }
 
 impl DrawStream {
-    /// The faces whose colors the draw reads: points and lines only the front ones, unless
-    /// capture records both.
-    pub(crate) fn faces(&self) -> Faces {
+    /// What the draw reads of its vertices: points and lines only the front colors, unless
+    /// capture records both; the eye coordinates only for capture and user clip planes.
+    pub(crate) fn reads(&self) -> Reads {
         let lines_or_points = matches!(
             self.assembler.mode(),
             GL_POINTS | GL_LINES | GL_LINE_STRIP | GL_LINE_LOOP
         );
-        if lines_or_points && self.capture.is_none() {
-            Faces::Front
-        } else {
-            Faces::Both
+        let captured = self.capture.is_some();
+        Reads {
+            faces: if lines_or_points && !captured {
+                Faces::Front
+            } else {
+                Faces::Both
+            },
+            eye: captured || self.planes.has_user_planes(),
         }
     }
 }
@@ -167,7 +171,7 @@ impl Context {
     ) {
         let mut outputs = self.lit_blocks.take().unwrap_or_default();
         let outputs_used = &mut outputs[..inputs.len()];
-        process_blocks(derived, stream.faces(), inputs, outputs_used);
+        process_blocks(derived, stream.reads(), inputs, outputs_used);
         for output in outputs_used.iter() {
             self.stream_lit_block(stream, output);
         }

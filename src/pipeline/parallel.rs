@@ -13,7 +13,7 @@ use std::sync::{Condvar, Mutex};
 
 use super::block::{InputBlock, OutputBlock};
 use super::vertex::DerivedState;
-use crate::lighting::batch::{Faces, process_blocks};
+use crate::lighting::batch::{Reads, process_blocks};
 
 /// Blocks per chunk: the unit of work (2048 vertices, about 230 KiB of lit blocks; large
 /// enough that handing chunks over costs little next to lighting them).
@@ -71,7 +71,7 @@ impl<C> Drop for CloseOnDrop<'_, C> {
     }
 }
 
-/// Lights `blocks` blocks (the colors of `faces`) with `helpers` helper threads besides the
+/// Lights `blocks` blocks (for what `reads` says) with `helpers` helper threads besides the
 /// calling thread and gives them to `stream` in order on the calling thread. `fill(block, input)` puts block `block`'s
 /// vertices into `input` (which starts as `template`, and keeps what `fill` leaves there).
 ///
@@ -99,7 +99,7 @@ impl<C> Drop for CloseOnDrop<'_, C> {
 /// let mut xs = Vec::new();
 /// light_in_order(
 ///     &derived,
-///     fflight::lighting::batch::Faces::Both,
+///     fflight::lighting::batch::Faces::Both.into(),
 ///     &InputBlock::default(),
 ///     100,
 ///     1,
@@ -114,7 +114,7 @@ impl<C> Drop for CloseOnDrop<'_, C> {
 /// ```
 pub fn light_in_order(
     derived: &DerivedState,
-    faces: Faces,
+    reads: Reads,
     template: &InputBlock,
     blocks: usize,
     helpers: usize,
@@ -131,7 +131,7 @@ pub fn light_in_order(
             fill(first + k, input);
         }
         outputs.resize(len, OutputBlock::default());
-        process_blocks(derived, faces, &inputs[..len], outputs);
+        process_blocks(derived, reads, &inputs[..len], outputs);
     };
     let new_chunk = || {
         (

@@ -14,7 +14,7 @@ use super::parallel::{Step, in_order};
 use super::streaming::copy_streaming;
 use super::vertex::DerivedState;
 use crate::context::{Context, RenderMode};
-use crate::lighting::batch::{Faces, process_blocks};
+use crate::lighting::batch::{Faces, Reads, process_blocks};
 use crate::lighting::lanes::LANES;
 use crate::state::raster::ViewportMap;
 
@@ -92,6 +92,15 @@ pub(crate) struct PointsSink {
 }
 
 impl PointsSink {
+    /// What laying points out reads of them: the front colors, and the eye coordinates only
+    /// for user clip planes.
+    fn reads(&self) -> Reads {
+        Reads {
+            faces: Faces::Front,
+            eye: self.planes.has_user_planes(),
+        }
+    }
+
     /// Empties `out` for the points of up to `blocks` blocks. Its room is made at its first
     /// use, not per block.
     pub(crate) fn clear(&self, out: &mut LaidOutPoints, blocks: usize) {
@@ -152,7 +161,7 @@ impl PointsDraw<'_> {
                 self.first + self.count,
             );
             let lit = &mut outputs[..batch_len];
-            process_blocks(self.derived, Faces::Front, &inputs[..batch_len], lit);
+            process_blocks(self.derived, self.sink.reads(), &inputs[..batch_len], lit);
             lit.iter().for_each(&mut keep);
         }
     }

@@ -102,8 +102,9 @@ pub struct ProcessedVertex {
 pub struct VertexTransform {
     /// The modelview matrix, object to eye coordinates.
     pub modelview: DMat4,
-    /// The projection matrix, eye to clip coordinates.
-    pub projection: DMat4,
+    /// The projection matrix times the modelview matrix, object to clip coordinates: a
+    /// vertex's clip coordinates in one product, which every engine computes the same way.
+    pub object_to_clip: DMat4,
     /// Texture unit 0's texture matrix.
     pub texture: Mat4,
     /// The inverse transpose of the modelview's upper-left 3x3 (§2.11.3).
@@ -151,7 +152,7 @@ impl VertexTransform {
         });
         VertexTransform {
             modelview,
-            projection: projection.as_dmat4(),
+            object_to_clip: projection.as_dmat4() * modelview,
             texture,
             normal_matrix: inverse.transpose(),
             normal_rescale,
@@ -305,7 +306,7 @@ impl DerivedState {
         });
         ProcessedVertex {
             eye: eye.as_vec4(),
-            clip: (transform.projection * eye).as_vec4(),
+            clip: (transform.object_to_clip * object.as_dvec4()).as_vec4(),
             colors,
             tex_coord: transform.tex_coord(object, eye, attribs.normal, attribs.tex_coord),
             edge_flag: attribs.edge_flag,

@@ -6,7 +6,7 @@
 use super::block::{InputBlock, OutputBlock};
 use super::fetch::ArrayFetch;
 use super::vertex::{DerivedState, ProcessedVertex};
-use crate::lighting::batch::{Faces, process_blocks};
+use crate::lighting::batch::{Reads, process_blocks};
 use crate::lighting::lanes::LANES;
 
 /// Slots in the cache: a mesh whose rows are shorter than half of this reuses every vertex.
@@ -41,8 +41,8 @@ pub struct VertexCache {
     outputs: Vec<OutputBlock>,
     /// The cache of indexed separate triangles in feedback and selection.
     pub(crate) mesh: super::mesh::MeshCache,
-    /// The faces whose colors the draw reads.
-    faces: Faces,
+    /// What the draw reads of its vertices.
+    reads: Reads,
 }
 
 /// Scratch space: a copy of a context starts with an empty cache.
@@ -53,7 +53,7 @@ impl Clone for VertexCache {
 }
 
 impl VertexCache {
-    /// Empties the cache for a new draw that reads the colors of `faces`.
+    /// Empties the cache for a new draw that reads what `reads` says of its vertices.
     ///
     /// # Examples
     ///
@@ -64,8 +64,8 @@ impl VertexCache {
     /// cache.start_draw(Faces::Both); // allocates the slots once, then only marks them empty
     /// cache.start_draw(Faces::Front);
     /// ```
-    pub fn start_draw(&mut self, faces: Faces) {
-        self.faces = faces;
+    pub fn start_draw(&mut self, reads: impl Into<Reads>) {
+        self.reads = reads.into();
         if self.slots.is_empty() {
             self.slots = vec![
                 Slot {
@@ -227,7 +227,7 @@ impl VertexCache {
             }
             process_blocks(
                 derived,
-                self.faces,
+                self.reads,
                 &self.inputs,
                 &mut self.outputs[..blocks],
             );

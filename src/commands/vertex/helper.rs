@@ -26,7 +26,7 @@ use std::thread::Thread;
 use std::time::{Duration, Instant};
 
 use super::{HALF_BLOCKS, HalfBlocks, half_blocks};
-use crate::lighting::batch::{Faces, process_blocks};
+use crate::lighting::batch::{Reads, process_blocks};
 use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::pipeline::points::{LaidOutPoints, PointsSink};
 use crate::pipeline::vertex::DerivedState;
@@ -70,8 +70,8 @@ pub(crate) struct Offer {
     /// The batch's number in its job, from 1.
     seq: u64,
     derived: Arc<DerivedState>,
-    /// The faces whose colors the primitive reads.
-    faces: Faces,
+    /// What the primitive reads of its vertices.
+    reads: Reads,
     /// Where the helper lays out the points it lights, when it does.
     points: Option<Arc<PointsSink>>,
     /// The number of the primitive whose attributes the blocks hold.
@@ -85,7 +85,7 @@ impl Offer {
         let first = index * CHUNK_BLOCKS;
         let inputs: &[InputBlock] =
             &self.inputs[first / HALF_BLOCKS][first % HALF_BLOCKS..][..CHUNK_BLOCKS];
-        process_blocks(&self.derived, self.faces, inputs, outputs);
+        process_blocks(&self.derived, self.reads, inputs, outputs);
     }
 }
 
@@ -172,7 +172,7 @@ impl Offers {
 }
 
 /// Offers `inputs` (every block full, with the attributes of primitive number `primitive`)
-/// to the helper thread, to light with `derived` for the colors of `faces` (and lay out into
+/// to the helper thread, to light with `derived` for what `reads` says (and lay out into
 /// `points`, if given); `inputs` gets the blocks of a batch of `spare`, collected before (or
 /// new blocks, if the helper still holds them all) in exchange, to fill again. The job's
 /// batches offered before and not collected must be fewer than `RING`. Returns the offer, and
@@ -181,7 +181,7 @@ impl Offers {
 pub(crate) fn offer(
     job: &Arc<Job>,
     derived: &Arc<DerivedState>,
-    faces: Faces,
+    reads: Reads,
     points: Option<Arc<PointsSink>>,
     inputs: &mut [HalfBlocks; 2],
     primitive: u64,
@@ -194,7 +194,7 @@ pub(crate) fn offer(
     let offer = Offer {
         seq: job.offered.load(Ordering::Relaxed) + 1,
         derived: derived.clone(),
-        faces,
+        reads,
         points,
         primitive,
         inputs: std::mem::replace(inputs, fresh),
@@ -440,6 +440,7 @@ fn next_job(helper: &Helper) -> Arc<Job> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::lighting::batch::Faces;
 
     /// A batch of blocks with a vertex in every lane, all different.
     fn inputs() -> [HalfBlocks; 2] {
@@ -475,7 +476,7 @@ mod tests {
         let offer = Offer {
             seq: 1,
             derived: derived.clone(),
-            faces: Faces::Front,
+            reads: Faces::Front.into(),
             points: None,
             primitive: 1,
             inputs: inputs(),
@@ -500,7 +501,7 @@ mod tests {
         let mut expected = vec![OutputBlock::default(); 2 * HALF_BLOCKS];
         for (half, inputs) in offer.inputs.iter().enumerate() {
             let outputs = &mut expected[half * HALF_BLOCKS..][..HALF_BLOCKS];
-            process_blocks(&derived, Faces::Front, &inputs[..], outputs);
+            process_blocks(&derived, offer.reads, &inputs[..], outputs);
         }
         let mut offers = Offers::default();
         let mut scratch = vec![OutputBlock::default(); CHUNK_BLOCKS];

@@ -10,7 +10,7 @@ use crate::lighting::fast::{
     DISCONTINUITY, DOT_ERROR, ERROR_BUDGET, FastFace, FastLight, FastState, ILL_CONDITIONED,
     SHORTEST_HALF_SQUARED,
 };
-use crate::lighting::batch::Faces;
+use crate::lighting::batch::{Faces, Reads};
 use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::state::material::MaterialMask;
 
@@ -145,22 +145,23 @@ type Outputs<'a> = [&'a mut OutputBlock; BLOCKS];
 
 with_features! {
 /// Every block of `inputs` into `outputs` (pairwise), `BLOCKS` at a time (a count of blocks
-/// `BLOCKS` divides), for the colors of `faces`: each block's refused lanes (one bit each,
-/// whose outputs the caller replaces) at its index in `refused`. For the front face alone,
+/// `BLOCKS` divides), for what `reads` says: each block's refused lanes (one bit each, whose
+/// outputs the caller replaces) at its index in `refused`. For the front face alone,
 /// two-sided lighting runs as one-sided: the front colors are the same.
 pub(super) fn process_blocks(
     state: &FastState,
-    faces: Faces,
+    reads: Reads,
     inputs: &[InputBlock],
     outputs: &mut [OutputBlock],
     refused: &mut [u8],
 ) {
     let count = inputs.len().min(outputs.len()).min(refused.len());
     debug_assert!(count.is_multiple_of(BLOCKS));
-    let two_side = state.two_side && faces == Faces::Both;
-    // The back colors are left unwritten when only the front's are read: a store each, which
-    // a short kernel waits on.
-    let back = faces == Faces::Both;
+    let two_side = state.two_side && reads.faces == Faces::Both;
+    // What is not read is not written: the back colors are a store each, which a short
+    // kernel waits on; the eye coordinates a product in double precision.
+    let back = reads.faces == Faces::Both;
+    let wants_eye = reads.eye || state.reads_position;
     let groups = inputs[..count]
         .chunks_exact(BLOCKS)
         .zip(outputs[..count].chunks_exact_mut(BLOCKS))
@@ -170,11 +171,11 @@ pub(super) fn process_blocks(
         let mut outs = outs.iter_mut();
         let outs: Outputs = std::array::from_fn(|_| outs.next().expect("BLOCKS outputs"));
         let bits = match (state.lit, two_side, state.local_viewer) {
-            (false, _, _) => group_of::<false, false, false>(state, ins, outs, back),
-            (true, false, false) => group_of::<true, false, false>(state, ins, outs, back),
-            (true, false, true) => group_of::<true, false, true>(state, ins, outs, back),
-            (true, true, false) => group_of::<true, true, false>(state, ins, outs, back),
-            (true, true, true) => group_of::<true, true, true>(state, ins, outs, back),
+            (false, _, _) => group_of::<false, false, false>(state, ins, outs, back, wants_eye),
+            (true, false, false) => group_of::<true, false, false>(state, ins, outs, back, wants_eye),
+            (true, false, true) => group_of::<true, false, true>(state, ins, outs, back, wants_eye),
+            (true, true, false) => group_of::<true, true, false>(state, ins, outs, back, wants_eye),
+            (true, true, true) => group_of::<true, true, true>(state, ins, outs, back, wants_eye),
         };
         for (k, (refused, input)) in refused.iter_mut().zip(ins).enumerate() {
             *refused = bits.block_bits(k) & ((1u32 << input.len) - 1) as u8;
@@ -217,20 +218,17 @@ fn clamp4(c: [F; 4]) -> [F; 4] {
 
 with_features! {
 /// `m * v` in double precision with `m` in columns, in glam's order of operations (no fused
-/// multiply-add): the scalar path's results to the last bit. Also returns them rounded to
-/// single precision.
+/// multiply-add), rounded to single precision: the scalar path's results to the last bit.
 #[inline]
-fn transform4_exact(m: &[[f64; 4]; 4], v: [D2; 4]) -> ([D2; 4], [F; 4]) {
-    let mut out = [v[0]; 4];
+fn transform4_exact(m: &[[f64; 4]; 4], v: [D2; 4]) -> [F; 4] {
     let mut rounded = [F::zero(); 4];
-    for (row, o) in out.iter_mut().enumerate() {
+    for (row, r) in rounded.iter_mut().enumerate() {
         let mut sum = v[0].scale(m[0][row]);
         sum = sum.add(v[1].scale(m[1][row]));
         sum = sum.add(v[2].scale(m[2][row]));
-        *o = sum.add(v[3].scale(m[3][row]));
-        rounded[row] = o.to_f32();
+        *r = sum.add(v[3].scale(m[3][row])).to_f32();
     }
-    (out, rounded)
+    rounded
 }
 }
 
@@ -297,6 +295,7 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
     ins: Inputs,
     mut outs: Outputs,
     back: bool,
+    wants_eye: bool,
 ) -> Mask {
     let object = load4!(ins, position);
     let mut refused = Mask::none();
@@ -304,10 +303,14 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
         refused = refused | c.out_of_range();
     }
     let object = [D2::from_f32(object[0]), D2::from_f32(object[1]), D2::from_f32(object[2]), D2::from_f32(object[3])];
-    let (eye, eye_rounded) = transform4_exact(&state.modelview, object);
-    store4!(eye_rounded, outs, eye);
-    store4!(transform4_exact(&state.projection, eye).1, outs, clip);
-    let eye = eye_rounded;
+    store4!(transform4_exact(&state.object_to_clip, object), outs, clip);
+    let eye = if wants_eye {
+        let eye = transform4_exact(&state.modelview, object);
+        store4!(eye, outs, eye);
+        eye
+    } else {
+        [F::zero(); 4]
+    };
     if state.texture_is_identity {
         for (out, input) in outs.iter_mut().zip(ins) {
             out.tex_coord = input.tex_coord;
@@ -364,20 +367,24 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
         normal_scale = (length_squared.sqrt() * F::splat(scale)).max(normal_scale);
     }
 
-    let w = eye[3];
-    let mut position = V3 {
-        x: eye[0],
-        y: eye[1],
-        z: eye[2],
-    };
-    if !w.all_eq(1.0) {
-        // §2.14.1 reads V as homogeneous: divided by w unless w is 0.
-        let divisor = w.abs().gt(F::zero()).select(w, F::splat(1.0));
-        let inverse = F::splat(1.0).div(divisor);
-        position = position.scale(inverse);
-        refused = refused | divisor.abs().lt(F::splat(1.0 / 1024.0));
+    // The vertex's position and its length, where lighting reads them (0 elsewhere).
+    let (mut position, mut position_length) = (V3::zero(), F::zero());
+    if state.reads_position {
+        let w = eye[3];
+        position = V3 {
+            x: eye[0],
+            y: eye[1],
+            z: eye[2],
+        };
+        if !w.all_eq(1.0) {
+            // §2.14.1 reads V as homogeneous: divided by w unless w is 0.
+            let divisor = w.abs().gt(F::zero()).select(w, F::splat(1.0));
+            let inverse = F::splat(1.0).div(divisor);
+            position = position.scale(inverse);
+            refused = refused | divisor.abs().lt(F::splat(1.0 / 1024.0));
+        }
+        position_length = position.dot(position).sqrt();
     }
-    let position_length = position.dot(position).sqrt();
     let eye_direction = if LOCAL_VIEWER {
         refused = refused | position_length.lt(F::splat(1e-6));
         position.scale(-F::splat(1.0).div(position_length))

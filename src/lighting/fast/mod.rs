@@ -22,7 +22,7 @@ mod x86;
 
 use glam::{DVec3, Mat3, Mat4, Vec4};
 
-use super::batch::{Faces, generate_tex_coords, process_blocks_exact};
+use super::batch::{Reads, generate_tex_coords, process_blocks_exact};
 use super::lanes::LANES;
 use super::{PreparedFace, PreparedLight, PreparedLighting};
 use crate::pipeline::block::{InputBlock, OutputBlock};
@@ -126,7 +126,7 @@ pub struct FastState {
     /// In double precision: eye and clip coordinates are computed as the scalar path computes
     /// them, to the last bit, so clipping and window coordinates do not depend on the engine.
     modelview: [[f64; 4]; 4],
-    projection: [[f64; 4]; 4],
+    object_to_clip: [[f64; 4]; 4],
     texture: [[f32; 4]; 4],
     texture_is_identity: bool,
     tex_gen: bool,
@@ -136,6 +136,8 @@ pub struct FastState {
     lit: bool,
     two_side: bool,
     local_viewer: bool,
+    /// Some light is positional, or the viewer local: lighting reads the eye coordinates.
+    reads_position: bool,
     separate_specular: bool,
     lights: [FastLight; MAX_LIGHTS],
     light_count: usize,
@@ -188,10 +190,10 @@ impl FastState {
     /// ```
     pub fn new(transform: &VertexTransform, lighting: &PreparedLighting) -> Option<FastState> {
         let modelview = transform.modelview.as_mat4();
-        let projection = transform.projection.as_mat4();
+        let object_to_clip = transform.object_to_clip.as_mat4();
         let normal_matrix = transform.normal_matrix.as_mat3();
         let matrices_ok = in_range(&modelview.to_cols_array())
-            && in_range(&projection.to_cols_array())
+            && in_range(&object_to_clip.to_cols_array())
             && in_range(&transform.texture.to_cols_array())
             && in_range(&normal_matrix.to_cols_array())
             && transform
@@ -202,7 +204,7 @@ impl FastState {
         }
         let mut state = FastState {
             modelview: transform.modelview.to_cols_array_2d(),
-            projection: transform.projection.to_cols_array_2d(),
+            object_to_clip: transform.object_to_clip.to_cols_array_2d(),
             texture: transform.texture.to_cols_array_2d(),
             texture_is_identity: transform.texture == Mat4::IDENTITY,
             tex_gen: transform.tex_gen.is_some(),
@@ -212,6 +214,8 @@ impl FastState {
             lit: lighting.enabled,
             two_side: lighting.two_side,
             local_viewer: lighting.local_viewer,
+            reads_position: lighting.enabled
+                && (lighting.local_viewer || lighting.lights().any(|l| l.positional)),
             separate_specular: lighting.separate_specular,
             lights: [FastLight::default(); MAX_LIGHTS],
             light_count: 0,
@@ -341,13 +345,13 @@ impl FastLight {
     }
 }
 
-/// Processes `inputs` into `outputs` (pairwise) with the fast engine for the colors of
-/// `faces`, and returns true; or returns false, having written nothing, when the CPU lacks the
+/// Processes `inputs` into `outputs` (pairwise) with the fast engine for what `reads` says,
+/// and returns true; or returns false, having written nothing, when the CPU lacks the
 /// instructions.
 pub(crate) fn process_blocks(
     state: &FastState,
     derived: &DerivedState,
-    faces: Faces,
+    reads: Reads,
     inputs: &[InputBlock],
     outputs: &mut [OutputBlock],
 ) -> bool {
@@ -366,7 +370,7 @@ pub(crate) fn process_blocks(
             let refused = &mut refused[..end - first];
             kernel(
                 state,
-                faces,
+                reads,
                 &inputs[first..end],
                 &mut outputs[first..end],
                 refused,
@@ -400,7 +404,7 @@ pub(crate) fn process_blocks(
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
-        let _ = (state, derived, faces, inputs, outputs);
+        let _ = (state, derived, reads, inputs, outputs);
         false
     }
 }
@@ -414,9 +418,9 @@ pub enum InstructionSet {
     Avx512,
 }
 
-/// The kernel of instruction set `set` alone on `inputs` into `outputs` for the colors of
-/// `faces`: its outputs for the
-/// lanes it serves, and each block's refused lanes (one bit each; their outputs are to be
+/// The kernel of instruction set `set` alone on `inputs` into `outputs` for what `reads`
+/// says (the colors of some faces, and maybe the eye coordinates): its outputs for the lanes
+/// it serves, and each block's refused lanes (one bit each; their outputs are to be
 /// replaced) at the block's index in `refused`; false when this CPU lacks `set`. Texture
 /// coordinate generation is left out. For tests that compare the instruction sets whatever
 /// the machine would pick, and measure what the kernel serves.
@@ -443,21 +447,22 @@ pub enum InstructionSet {
 pub fn kernel_blocks_on(
     set: InstructionSet,
     state: &FastState,
-    faces: Faces,
+    reads: impl Into<Reads>,
     inputs: &[InputBlock],
     outputs: &mut [OutputBlock],
     refused: &mut [u8],
 ) -> bool {
+    let reads = reads.into();
     #[cfg(target_arch = "x86_64")]
     {
         x86::kernel_for(set).is_some_and(|kernel| {
-            kernel(state, faces, inputs, outputs, refused);
+            kernel(state, reads, inputs, outputs, refused);
             true
         })
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
-        let _ = (set, state, faces, inputs, outputs, refused);
+        let _ = (set, state, reads, inputs, outputs, refused);
         false
     }
 }

@@ -9,7 +9,7 @@
 #![allow(unsafe_code)]
 
 use super::{FastState, InstructionSet};
-use crate::lighting::batch::Faces;
+use crate::lighting::batch::Reads;
 use crate::pipeline::block::{InputBlock, OutputBlock};
 
 #[path = "narrow.rs"]
@@ -17,9 +17,9 @@ mod narrow;
 #[path = "wide.rs"]
 mod wide;
 
-/// A kernel: the blocks of a call for the colors of the faces given, each block's refused
+/// A kernel: the blocks of a call for what the consumer reads, each block's refused
 /// lanes written to the byte of the same index.
-pub(super) type Kernel = fn(&FastState, Faces, &[InputBlock], &mut [OutputBlock], &mut [u8]);
+pub(super) type Kernel = fn(&FastState, Reads, &[InputBlock], &mut [OutputBlock], &mut [u8]);
 
 /// The kernel for this CPU: AVX-512 or AVX2 with FMA, or `None` without them (found once).
 pub(super) fn kernel() -> Option<Kernel> {
@@ -33,17 +33,17 @@ pub(super) fn kernel_for(set: InstructionSet) -> Option<Kernel> {
         let avx2 = is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma");
         let avx512 = is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512vl");
         if set == InstructionSet::Avx512 && avx2 && avx512 {
-            Some(|state, faces, inputs, outputs, refused| {
+            Some(|state, reads, inputs, outputs, refused| {
                 // Pairs of blocks in sixteen lanes, an odd last block in eight: the same
                 // operations lane by lane, so a vertex's result does not depend on its pairing.
                 let count = inputs.len().min(outputs.len()).min(refused.len());
                 let pairs = count - count % 2;
                 // SAFETY: the CPU has the features both are compiled with.
                 unsafe {
-                    avx512::process_blocks(state, faces, &inputs[..pairs], outputs, refused);
+                    avx512::process_blocks(state, reads, &inputs[..pairs], outputs, refused);
                     avx512_narrow::process_blocks(
                         state,
-                        faces,
+                        reads,
                         &inputs[pairs..count],
                         &mut outputs[pairs..],
                         &mut refused[pairs..],
@@ -52,8 +52,8 @@ pub(super) fn kernel_for(set: InstructionSet) -> Option<Kernel> {
             })
         } else if set == InstructionSet::Avx2 && avx2 {
             // SAFETY: the CPU has the features `avx2::process_blocks` is compiled with.
-            Some(|state, faces, inputs, outputs, refused| unsafe {
-                avx2::process_blocks(state, faces, inputs, outputs, refused)
+            Some(|state, reads, inputs, outputs, refused| unsafe {
+                avx2::process_blocks(state, reads, inputs, outputs, refused)
             })
         } else {
             None
