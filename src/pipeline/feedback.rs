@@ -60,7 +60,7 @@ pub(crate) fn encode_lane(
 }
 
 /// Lays out the points of a block's `[window, color, tex_coord]` whose lanes are `visible`
-/// as feedback does (GL_POINT_TOKEN, then the values of `FeedbackBuffer::vertex`); returns
+/// (a bit each, lane 0 lowest) as feedback does (GL_POINT_TOKEN, then the values of `FeedbackBuffer::vertex`); returns
 /// how many values it wrote. Z, W, COLOR and TEXTURE are the layout's; WIDTH (8 or 16) is at
 /// least its values per point. The block's values, a column per value, are turned into a row
 /// per point at once: a transposition the compiler does in vector shuffles, where a lane's
@@ -73,7 +73,7 @@ fn encode_points<
     const TEXTURE: bool,
     const WIDTH: usize,
 >(
-    visible: &[bool; LANES],
+    visible: u8,
     [window, color, tex_coord]: [&Lanes4; 3],
     out: &mut [f32],
 ) -> usize {
@@ -111,7 +111,7 @@ fn encode_points<
             }
         }
     }
-    if visible.iter().all(|&v| v) {
+    if visible == u8::MAX {
         // Every point drawn (the usual block): each at a constant offset.
         let rooms = out[..LANES * per_point].chunks_exact_mut(per_point);
         for (room, point) in rooms.zip(&points) {
@@ -121,9 +121,9 @@ fn encode_points<
     }
     // Every lane written, only the visible ones kept: the loop does not branch.
     let mut n = 0;
-    for (point, &visible) in points.iter().zip(visible) {
+    for (lane, point) in points.iter().enumerate() {
         out[n..n + per_point].copy_from_slice(&point[..per_point]);
-        n += per_point * usize::from(visible);
+        n += per_point * usize::from(visible >> lane & 1);
     }
     n
 }
@@ -133,7 +133,7 @@ fn encode_points<
 #[multiversion(targets("x86_64+avx2+fma+bmi1+bmi2+lzcnt+popcnt", "aarch64+neon"))]
 fn encode_points_of_layout(
     layout: &FeedbackLayout,
-    visible: &[bool; LANES],
+    visible: u8,
     arrays: [&Lanes4; 3],
     out: &mut [f32],
 ) -> usize {
@@ -169,12 +169,12 @@ pub struct FeedbackLayout {
 
 impl FeedbackLayout {
     /// Lays out the points of a block's `[window, color, tex_coord]` whose lanes are `visible`
-    /// (GL_POINT_TOKEN, then each vertex's values) into `out`; returns how many values it
+    /// (a bit each, lane 0 lowest; GL_POINT_TOKEN, then each vertex's values) into `out`; returns how many values it
     /// wrote. `out` has room for a whole block's points (`point_values` each): past the
     /// values of the visible points, it may be written over.
     pub(crate) fn encode_points(
         &self,
-        visible: &[bool; LANES],
+        visible: u8,
         arrays: [&Lanes4; 3],
         out: &mut [f32],
     ) -> usize {
@@ -538,9 +538,10 @@ impl FeedbackBuffer {
         self.token_and_vertex(Some(GL_POINT_TOKEN), vertex);
     }
 
-    /// The points of a block in the lanes that are `visible`: window coordinates (w = clip
-    /// w), colors and texture coordinates, one component per array. The block's values are
-    /// laid out with code chosen once for the layout, then written with one copy.
+    /// The points of a block in the lanes that are `visible` (a bit each, lane 0 lowest):
+    /// window coordinates (w = clip w), colors and texture coordinates, one component per
+    /// array. The block's values are laid out with code chosen once for the layout, then
+    /// written with one copy.
     ///
     /// # Examples
     ///
@@ -554,25 +555,16 @@ impl FeedbackBuffer {
     /// };
     /// let mut window = [[0.0; 8]; 4];
     /// window[0] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]; // x
-    /// let mut visible = [false; 8];
-    /// visible[2] = true;
     /// let zero = [[0.0; 8]; 4];
-    /// buffer.points(&visible, &window, &zero, &zero);
+    /// buffer.points(1 << 2, &window, &zero, &zero); // lane 2 alone
     /// assert_eq!(buffer.take_kept(), [GL_POINT_TOKEN as f32, 2.0, 0.0]);
     /// # Ok::<(), fflight::GlError>(())
     /// ```
-    pub fn points(
-        &mut self,
-        visible: &[bool; LANES],
-        window: &Lanes4,
-        color: &Lanes4,
-        tex_coord: &Lanes4,
-    ) {
+    pub fn points(&mut self, visible: u8, window: &Lanes4, color: &Lanes4, tex_coord: &Lanes4) {
         let Some(layout) = self.layout else {
-            visible
-                .iter()
-                .filter(|&&v| v)
-                .for_each(|_| self.token(GL_POINT_TOKEN));
+            for _ in 0..visible.count_ones() {
+                self.token(GL_POINT_TOKEN);
+            }
             return;
         };
         let arrays = [window, color, tex_coord];
@@ -580,7 +572,7 @@ impl FeedbackBuffer {
         // place in the application's memory when it fits.
         let whole = LANES * layout.point_values();
         if let FeedbackStorage::Application(memory) = &mut self.storage
-            && visible.iter().all(|&v| v)
+            && visible == u8::MAX
             && self.capacity - self.written >= whole
         {
             let room = &mut memory.as_mut_slice()[self.written..self.written + whole];
@@ -743,17 +735,12 @@ mod tests {
             GL_3D_COLOR_TEXTURE,
             GL_4D_COLOR_TEXTURE,
         ];
-        let patterns: [[bool; LANES]; 4] = [
-            [true; LANES],
-            [false; LANES],
-            std::array::from_fn(|lane| lane % 2 == 1),
-            std::array::from_fn(|lane| lane == LANES - 1),
-        ];
+        let patterns = [u8::MAX, 0, 0b1010_1010, 1 << (LANES - 1)];
         for kind in types {
             let layout = FeedbackLayout::of(kind).unwrap();
             for visible in patterns {
                 let mut expected = Vec::new();
-                for lane in (0..LANES).filter(|&lane| visible[lane]) {
+                for lane in (0..LANES).filter(|&lane| visible >> lane & 1 != 0) {
                     let vertex = FeedbackVertex {
                         window: crate::pipeline::block::lanes4_get(&window, lane),
                         color: crate::pipeline::block::lanes4_get(&color, lane),
@@ -765,11 +752,11 @@ mod tests {
                     expected.extend_from_slice(&values[..n]);
                 }
                 let mut out = [f32::NAN; LANES * MAX_POINT_VALUES];
-                let n = layout.encode_points(&visible, [&window, &color, &tex_coord], &mut out);
+                let n = layout.encode_points(visible, [&window, &color, &tex_coord], &mut out);
                 assert_eq!(
                     &out[..n],
                     &expected[..],
-                    "type {kind:#x}, visible {visible:?}"
+                    "type {kind:#x}, visible {visible:#b}"
                 );
             }
         }

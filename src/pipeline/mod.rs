@@ -206,12 +206,12 @@ impl Context {
     fn feedback_points(&mut self, planes: &ClipPlanes, block: &OutputBlock) {
         let (visible, window) = points::visible_points(&self.raster.viewport_map(), planes, block);
         if self.selecting() {
-            for lane in (0..LANES).filter(|&lane| visible[lane]) {
+            for lane in (0..LANES).filter(|&lane| visible >> lane & 1 != 0) {
                 self.selection.hit(window[2][lane]);
             }
         } else {
             self.feedback
-                .points(&visible, &window, &block.front_primary, &block.tex_coord);
+                .points(visible, &window, &block.front_primary, &block.tex_coord);
         }
     }
 

@@ -26,8 +26,9 @@ const CHUNK_BLOCKS: usize = 256;
 /// slower).
 const LIT_BLOCKS: usize = 4;
 
-/// The window coordinates of a lit block's points, and which of them are drawn: inside the
-/// view volume and every enabled user clip plane (§2.12), and among the block's `len`.
+/// The window coordinates of a lit block's points, and which of them are drawn (a bit each,
+/// lane 0 lowest): inside the view volume and every enabled user clip plane (§2.12), and
+/// among the block's `len`.
 /// Compiled for AVX2 where the CPU has it (the code outside the kernels is otherwise built for
 /// the baseline instruction set): eight lanes, a component of a block to a register. With
 /// AVX-512's sixteen, the compiler loads two components that the kernel stored apart as one,
@@ -37,10 +38,14 @@ pub(crate) fn visible_points(
     viewport: &ViewportMap,
     planes: &ClipPlanes,
     block: &OutputBlock,
-) -> ([bool; LANES], super::block::Lanes4) {
+) -> (u8, super::block::Lanes4) {
     let masks = planes.block_masks(block);
-    let visible = std::array::from_fn(|lane| lane < block.len && masks[lane] == 0);
-    (visible, viewport.window_lanes(&block.clip))
+    let mut visible = 0;
+    for (lane, mask) in masks.into_iter().enumerate() {
+        visible |= u8::from(mask == 0) << lane;
+    }
+    let filled = (1u16 << block.len) - 1;
+    (visible & filled as u8, viewport.window_lanes(&block.clip))
 }
 
 /// Blocks `inputs` filled with the elements from `start` on (at most to `end`), `LANES` a
@@ -120,10 +125,10 @@ impl PointsSink {
         match &self.layout {
             Some(layout) => {
                 let arrays = [&window, &block.front_primary, &block.tex_coord];
-                out.len += layout.encode_points(&visible, arrays, &mut out.values[out.len..]);
+                out.len += layout.encode_points(visible, arrays, &mut out.values[out.len..]);
             }
             None => {
-                for lane in (0..LANES).filter(|&lane| visible[lane]) {
+                for lane in (0..LANES).filter(|&lane| visible >> lane & 1 != 0) {
                     let z = window[2][lane];
                     let (min, max) = out.hits.get_or_insert((z, z));
                     *min = min.min(z);
