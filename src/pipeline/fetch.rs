@@ -2,7 +2,7 @@
 //! size and kind (normalized or not), that decodes a block of elements at a time into the
 //! lanes of an `InputBlock`. No per-element dispatch on the type.
 
-use glam::Mat4;
+use glam::{Mat4, Vec4};
 
 use crate::gl::*;
 use crate::lighting::lanes::{LANES, LanesF32};
@@ -98,20 +98,35 @@ struct ArraySource<'a> {
     floats: Option<usize>,
 }
 
+/// The 16 bytes at `at` in `bytes` as four floats (a function, not a closure, so that it
+/// inlines where its caller's target features are).
+#[inline(always)]
+fn four_floats(bytes: &[u8], at: usize) -> Vec4 {
+    let element: &[u8; 16] = bytes[at..][..16].try_into().expect("16 bytes");
+    let float = |c: usize| {
+        f32::from_ne_bytes([
+            element[4 * c],
+            element[4 * c + 1],
+            element[4 * c + 2],
+            element[4 * c + 3],
+        ])
+    };
+    Vec4::new(float(0), float(1), float(2), float(3))
+}
+
 /// A full block's elements, `stride` bytes apart in `run`, each read as 16 bytes (its floats
 /// and what follows them), into the components `lanes`: 4 lanes at a time, a 4 x 4
 /// transposition, which glam does in a few shuffles on SSE2 and NEON.
 #[inline(always)]
 fn read_transposed(run: &[u8], stride: usize, lanes: &mut [LanesF32]) {
     for half in 0..LANES / 4 {
-        let elements = Mat4::from_cols_array_2d(&std::array::from_fn(|k| {
-            let element: &[u8; 16] = run[(4 * half + k) * stride..][..16]
-                .try_into()
-                .expect("16 bytes");
-            std::array::from_fn(|c| {
-                f32::from_ne_bytes(element[4 * c..][..4].try_into().expect("4 bytes"))
-            })
-        }))
+        let at = |k: usize| (4 * half + k) * stride;
+        let elements = Mat4::from_cols(
+            four_floats(run, at(0)),
+            four_floats(run, at(1)),
+            four_floats(run, at(2)),
+            four_floats(run, at(3)),
+        )
         .transpose();
         for (c, component) in lanes.iter_mut().enumerate() {
             component[4 * half..][..4].copy_from_slice(&elements.col(c).to_array());
@@ -176,6 +191,42 @@ fn read_floats_of<const N: usize>(
     }
 }
 
+/// Full blocks `inputs` of the packed array of `N` floats `bytes` (an array of `kind`), from
+/// element `first` on: the whole run sliced once, so that each block's reads have constant
+/// offsets and no check. False, having read nothing, when the bytes end before the last
+/// element's 16 (`read_transposed` reads each element as 16 bytes).
+#[inline(always)]
+fn read_packed_blocks<const N: usize>(
+    bytes: &[u8],
+    first: usize,
+    kind: ArrayKind,
+    inputs: &mut [InputBlock],
+) -> bool {
+    let block_bytes = LANES * 4 * N;
+    let read_past = 16 - 4 * N;
+    let start = first * 4 * N;
+    let Some(run) = bytes.get(start..start + inputs.len() * block_bytes + read_past) else {
+        return false;
+    };
+    for (k, input) in inputs.iter_mut().enumerate() {
+        let Some(lanes) = float_lanes(kind, input) else {
+            return false;
+        };
+        let block = &run[k * block_bytes..][..block_bytes + read_past];
+        read_transposed(block, 4 * N, &mut lanes[..N]);
+        fill_missing(lanes, N);
+    }
+    true
+}
+
+/// The components from `size` on of elements that have only `size`: (z, w) = (0, 1) (§2.8).
+#[inline(always)]
+fn fill_missing(lanes: &mut [LanesF32], size: usize) {
+    for (c, component) in lanes.iter_mut().enumerate().skip(size) {
+        *component = [if c == 3 { 1.0 } else { 0.0 }; LANES];
+    }
+}
+
 /// The lanes of `block` that an array of `kind` read as floats fills; `None` for the edge
 /// flag, fog coordinate and color index arrays.
 fn float_lanes(kind: ArrayKind, block: &mut InputBlock) -> Option<&mut [LanesF32]> {
@@ -200,9 +251,7 @@ fn read_float_run(
     out: &mut [LanesF32],
 ) {
     read_floats(source.bytes, (size, source.stride), first, len, out);
-    for (c, component) in out.iter_mut().enumerate().skip(size) {
-        *component = [if c == 3 { 1.0 } else { 0.0 }; LANES];
-    }
+    fill_missing(out, size);
 }
 
 /// The enabled arrays of a draw, ready to fill blocks.
@@ -347,7 +396,8 @@ impl<'a> ArrayFetch<'a> {
     /// `fill_run` for consecutive blocks: `inputs[k]` gets the elements from
     /// `first + k * LANES` on, up to `end`. When every array is read as floats (or not at
     /// all), they are read an array at a time, each over all the blocks, so that the choice
-    /// of array and converter is made once per call rather than once per block.
+    /// of array and converter is made once per call rather than once per block; a packed
+    /// array of 3 or 4 floats filling every block is sliced once for them all.
     #[inline(always)]
     pub fn fill_runs(&self, inputs: &mut [InputBlock], first: usize, end: usize) {
         let start = |k: usize| first + k * LANES;
@@ -368,13 +418,26 @@ impl<'a> ArrayFetch<'a> {
         for (k, input) in inputs.iter_mut().enumerate() {
             input.len = LANES.min(end - start(k));
         }
+        let full = inputs.iter().all(|input| input.len == LANES);
         for (kind, source) in ALL_KINDS.into_iter().zip(&self.arrays) {
             let Some(source) = source else { continue };
             let Some(size) = source.floats else { continue };
+            let packed = |n: usize| full && size == n && source.stride == 4 * n;
+            let first = first - self.base;
+            let done = if packed(3) {
+                read_packed_blocks::<3>(source.bytes, first, kind, inputs)
+            } else if packed(4) {
+                read_packed_blocks::<4>(source.bytes, first, kind, inputs)
+            } else {
+                false
+            };
+            if done {
+                continue;
+            }
             for (k, input) in inputs.iter_mut().enumerate() {
                 let len = input.len;
                 if let Some(out) = float_lanes(kind, input) {
-                    read_float_run(source, size, start(k) - self.base, len, out);
+                    read_float_run(source, size, first + k * LANES, len, out);
                 }
             }
         }
@@ -473,7 +536,8 @@ mod tests {
     /// Consecutive blocks filled together (`fill_runs`) hold what each filled alone
     /// (`fill_run`) holds, to the bit: arrays of floats alone (read an array at a time, a fog
     /// coordinate array among them), and with an array of bytes or edge flags (block by
-    /// block), over a last block that is not full.
+    /// block); over full blocks (packed arrays of 3 and 4 floats read as one run) and over a
+    /// last block that is not full; with bytes to spare after the last element, and with none.
     #[test]
     fn blocks_filled_together_equal_blocks_filled_alone() {
         let array = |size, component_type| ClientArray {
@@ -501,15 +565,33 @@ mod tests {
             &[(ArrayKind::Vertex, &float3), (ArrayKind::Color, &bytes4)],
             &[(ArrayKind::Vertex, &float4), (ArrayKind::EdgeFlag, &flags)],
         ];
-        for case in cases {
+        let first = base + 1;
+        for (case, count, spare) in cases
+            .into_iter()
+            .flat_map(|case| {
+                [(case, 4 * LANES), (case, elements - 1)]
+                    .map(|(c, n)| [(c, n, true), (c, n, false)])
+            })
+            .flatten()
+        {
+            let end = first + count;
             let mut arrays = [None; ARRAY_KINDS];
             for &(k, array) in case {
-                arrays[kind(k)] = Some((array, &bytes[..]));
+                let element_bytes = array.size as usize
+                    * if array.component_type == GL_FLOAT {
+                        4
+                    } else {
+                        1
+                    };
+                let len = if spare {
+                    bytes.len()
+                } else {
+                    (end - base) * element_bytes
+                };
+                arrays[kind(k)] = Some((array, &bytes[..len]));
             }
             let fetch = ArrayFetch::new(base, arrays);
-            let first = base + 1;
-            let end = base + elements;
-            let mut together = [InputBlock::default(); 5];
+            let mut together = vec![InputBlock::default(); count.div_ceil(LANES)];
             fetch.fill_runs(&mut together, first, end);
             for (k, block) in together.iter().enumerate() {
                 let start = first + k * LANES;
@@ -522,7 +604,11 @@ mod tests {
                         (0..b.len).map(|k| b.vertex(k)).collect::<Vec<_>>()
                     )
                 };
-                assert_eq!(lanes(block), lanes(&alone), "{case:?}, block {k}");
+                assert_eq!(
+                    lanes(block),
+                    lanes(&alone),
+                    "{case:?}, {count} elements, spare {spare}, block {k}"
+                );
             }
         }
     }
