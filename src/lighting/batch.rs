@@ -63,9 +63,10 @@ impl From<Faces> for Reads {
 }
 
 /// Processes `inputs` into `outputs` (pairwise; the shorter decides) with the state `derived`:
-/// transformation (§2.11) and lighting (§2.14.1) of every lane, for what `reads` says. Against
-/// `DerivedState::process` vertex by vertex: eye, clip and texture coordinates the same to the
-/// last bit, colors within 1e-5 (the fast kernel's bound is 5e-6).
+/// transformation (§2.11) and lighting (§2.14.1) of every lane, for what `reads` says (a
+/// `Faces` reads the eye coordinates too). Against `DerivedState::process` vertex by vertex:
+/// eye (where read), clip and texture coordinates the same to the last bit, colors within
+/// 1e-5 (the fast kernel's bound is 5e-6).
 ///
 /// # Examples
 ///
