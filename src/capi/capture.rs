@@ -9,7 +9,7 @@ use super::with_context;
 use crate::commands::capture::{BulkLayout, FloatLayout};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
-use crate::lighting::batch::Faces;
+use crate::lighting::batch::{Faces, Reads};
 use crate::lighting::lanes::LANES;
 use crate::pipeline::block::{Lanes4, OutputBlock};
 use crate::pipeline::capture::CapturedPrimitive;
@@ -305,15 +305,19 @@ pub unsafe extern "C" fn fflLightVertices(
             layout.outputs,
             count,
         );
-        // Without a back output, two-sided lighting need not light the back face.
-        let faces = if back_primary.is_null() && back_secondary.is_null() {
-            Faces::Front
-        } else {
-            Faces::Both
+        // Without a back output, two-sided lighting need not light the back face; without an
+        // eye output, the eye coordinates are computed only where lighting needs them.
+        let reads = Reads {
+            faces: if back_primary.is_null() && back_secondary.is_null() {
+                Faces::Front
+            } else {
+                Faces::Both
+            },
+            eye: !eye_positions.is_null(),
         };
         ctx.light_blocks(
             count,
-            faces,
+            reads,
             |first, block| {
                 let len = block.len;
                 let ahead = first + PREFETCH_AHEAD;

@@ -8,7 +8,7 @@ use glam::{Vec3, Vec4};
 
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
-use crate::lighting::batch::{Faces, process_blocks};
+use crate::lighting::batch::{Faces, Reads, process_blocks};
 use crate::lighting::lanes::LANES;
 use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::pipeline::capture::Capture;
@@ -213,7 +213,8 @@ impl Context {
     /// (`threads::thread_count`): `fill(first, block)` puts vertices `first..first +
     /// block.len` into the block's lanes (the lanes hold the current attributes and the
     /// position (0, 0, 0, 1), and what `fill` puts there stays until it puts something else),
-    /// `emit(first, block)` receives them lit (the colors of `faces`). Blocks are
+    /// `emit(first, block)` receives them lit (what `reads` says: a `Faces` reads the eye
+    /// coordinates too). Blocks are
     /// independent, so the results do not depend on the thread count; `emit` is called from
     /// the threads, each block once.
     /// GL_INVALID_OPERATION between glBegin and glEnd.
@@ -247,11 +248,12 @@ impl Context {
     pub fn light_blocks(
         &mut self,
         count: usize,
-        faces: Faces,
+        reads: impl Into<Reads>,
         fill: impl Fn(usize, &mut InputBlock) + Sync,
         emit: impl Fn(usize, &OutputBlock) + Sync,
     ) -> GlResult {
         self.outside_begin_end()?;
+        let reads = reads.into();
         let derived = self.shared_derived();
         let template = InputBlock::with_attribs(&self.current);
         // Lights the ranges of blocks `claim` gives until it gives none.
@@ -268,7 +270,7 @@ impl Context {
                     }
                     process_blocks(
                         &derived,
-                        faces,
+                        reads,
                         &inputs[..chunk_len],
                         &mut outputs[..chunk_len],
                     );
