@@ -98,8 +98,8 @@ struct ArraySource<'a> {
     floats: Option<usize>,
 }
 
-/// The 16 bytes at `at` in `bytes` as four floats (a function, not a closure, so that it
-/// inlines where its caller's target features are).
+/// The 16 bytes at `at` in `bytes` as four floats: one load where it inlines (built with
+/// `array::from_fn`, the closure stopped inlining and the floats went through the stack).
 #[inline(always)]
 fn four_floats(bytes: &[u8], at: usize) -> Vec4 {
     let element: &[u8; 16] = bytes[at..][..16].try_into().expect("16 bytes");
