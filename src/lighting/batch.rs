@@ -18,7 +18,7 @@
 use glam::{DMat3, DMat4, DVec3, Mat4, Vec4};
 use multiversion::multiversion;
 
-use super::lanes::{LANES, Lanes, LanesF32, Vec3s, clamp01};
+use super::lanes::{LANES, Lanes, LanesF32, Vec3s, clamp01, lanes_of};
 use super::{PreparedFace, PreparedLight, PreparedLighting};
 use crate::pipeline::block::{InputBlock, Lanes4, OutputBlock};
 use crate::pipeline::vertex::{DerivedState, VertexTransform};
@@ -544,7 +544,7 @@ pub(crate) fn generate_tex_coords(
     output: &mut OutputBlock,
     skip: u8,
 ) {
-    for lane in (0..LANES).filter(|lane| skip & (1 << lane) == 0) {
+    for lane in lanes_of(!skip) {
         let (position, attribs) = input.vertex(lane);
         let eye = transform.modelview * position.as_dvec4();
         let tex_coord = transform.tex_coord(position, eye, attribs.normal, attribs.tex_coord);

@@ -30,6 +30,41 @@ fn select(condition: bool, then: f64, otherwise: f64) -> f64 {
 /// Vertices per block.
 pub const LANES: usize = 8;
 
+/// The mask of a block's first `len` lanes (a bit each, lane 0 lowest), `len` at most
+/// `LANES`.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::lighting::lanes::filled_lanes;
+/// assert_eq!((filled_lanes(0), filled_lanes(3), filled_lanes(8)), (0, 0b111, 0xff));
+/// ```
+#[inline(always)]
+pub fn filled_lanes(len: usize) -> u8 {
+    ((1u16 << len) - 1) as u8
+}
+
+/// The lanes whose bits `mask` sets (lane 0 lowest), in order: a step per set bit, none for
+/// an empty mask (the usual one).
+///
+/// # Examples
+///
+/// ```
+/// use fflight::lighting::lanes::lanes_of;
+/// assert_eq!(lanes_of(0b1000_0101).collect::<Vec<_>>(), [0, 2, 7]);
+/// ```
+#[inline(always)]
+pub fn lanes_of(mask: u8) -> impl Iterator<Item = usize> {
+    let mut rest = mask;
+    std::iter::from_fn(move || {
+        (rest != 0).then(|| {
+            let lane = rest.trailing_zeros() as usize;
+            rest &= rest - 1;
+            lane
+        })
+    })
+}
+
 /// One f64 per lane.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[repr(align(64))]

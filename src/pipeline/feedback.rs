@@ -740,7 +740,7 @@ mod tests {
             let layout = FeedbackLayout::of(kind).unwrap();
             for visible in patterns {
                 let mut expected = Vec::new();
-                for lane in (0..LANES).filter(|&lane| visible >> lane & 1 != 0) {
+                for lane in crate::lighting::lanes::lanes_of(visible) {
                     let vertex = FeedbackVertex {
                         window: crate::pipeline::block::lanes4_get(&window, lane),
                         color: crate::pipeline::block::lanes4_get(&color, lane),

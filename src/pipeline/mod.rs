@@ -25,7 +25,7 @@ use crate::context::{Context, RenderMode};
 use crate::gl::*;
 use crate::lighting::FaceColors;
 use crate::lighting::batch::{Faces, Reads, process_blocks};
-use crate::lighting::lanes::LANES;
+use crate::lighting::lanes::lanes_of;
 use assembly::{Assembler, Primitive};
 use block::{InputBlock, OutputBlock};
 use clip::{ClipPlanes, PolygonVertex, clip_line, clip_triangle, point_visible};
@@ -206,7 +206,7 @@ impl Context {
     fn feedback_points(&mut self, planes: &ClipPlanes, block: &OutputBlock) {
         let (visible, window) = points::visible_points(&self.raster.viewport_map(), planes, block);
         if self.selecting() {
-            for lane in (0..LANES).filter(|&lane| visible >> lane & 1 != 0) {
+            for lane in lanes_of(visible) {
                 self.selection.hit(window[2][lane]);
             }
         } else {

@@ -15,7 +15,7 @@ use super::streaming::copy_streaming;
 use super::vertex::DerivedState;
 use crate::context::{Context, RenderMode};
 use crate::lighting::batch::{Faces, Reads, process_blocks};
-use crate::lighting::lanes::LANES;
+use crate::lighting::lanes::{LANES, filled_lanes, lanes_of};
 use crate::state::raster::ViewportMap;
 
 /// Blocks per chunk: 2048 points, whose feedback values (at most 13 each) take about 100 KiB.
@@ -44,8 +44,10 @@ pub(crate) fn visible_points(
     for (lane, mask) in masks.into_iter().enumerate() {
         visible |= u8::from(mask == 0) << lane;
     }
-    let filled = (1u16 << block.len) - 1;
-    (visible & filled as u8, viewport.window_lanes(&block.clip))
+    (
+        visible & filled_lanes(block.len),
+        viewport.window_lanes(&block.clip),
+    )
 }
 
 /// Blocks `inputs` filled with the elements from `start` on (at most to `end`), `LANES` a
@@ -128,7 +130,7 @@ impl PointsSink {
                 out.len += layout.encode_points(visible, arrays, &mut out.values[out.len..]);
             }
             None => {
-                for lane in (0..LANES).filter(|&lane| visible >> lane & 1 != 0) {
+                for lane in lanes_of(visible) {
                     let z = window[2][lane];
                     let (min, max) = out.hits.get_or_insert((z, z));
                     *min = min.min(z);

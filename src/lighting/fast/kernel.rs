@@ -178,7 +178,7 @@ pub(super) fn process_blocks(
             (true, true, true) => group_of::<true, true, true>(state, ins, outs, back, wants_eye),
         };
         for (k, (refused, input)) in refused.iter_mut().zip(ins).enumerate() {
-            *refused = bits.block_bits(k) & ((1u32 << input.len) - 1) as u8;
+            *refused = bits.block_bits(k) & crate::lighting::lanes::filled_lanes(input.len);
         }
     }
 }

@@ -23,7 +23,7 @@ mod x86;
 use glam::{DVec3, Mat3, Mat4, Vec4};
 
 use super::batch::{Reads, generate_tex_coords, process_blocks_exact};
-use super::lanes::LANES;
+use super::lanes::{LANES, lanes_of};
 use super::{PreparedFace, PreparedLight, PreparedLighting};
 use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::pipeline::vertex::{DerivedState, VertexTransform};
@@ -386,10 +386,7 @@ pub(crate) fn process_blocks(
                         lanes,
                     );
                 }
-                let mut lanes = lanes;
-                while lanes != 0 {
-                    let lane = lanes.trailing_zeros() as usize;
-                    lanes &= lanes - 1;
+                for lane in lanes_of(lanes) {
                     let queue = queue.get_or_insert_default();
                     if queue.push(&inputs[block], block, lane) {
                         queue.relight(derived, &mut outputs[..=block]);
