@@ -54,9 +54,7 @@ fn push_varying(
     attribs: &CurrentAttribs,
     varying: Varying,
 ) {
-    // A block is moved on from when it fills: one check here spares each store its own.
     let lane = block.len;
-    assert!(lane < LANES, "a full block takes no vertex");
     block.set_position(lane, position);
     // The usual case, a normal per vertex, tested at once.
     if varying == Varying::NORMAL {
