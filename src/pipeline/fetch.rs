@@ -577,16 +577,10 @@ mod tests {
             let end = first + count;
             let mut arrays = [None; ARRAY_KINDS];
             for &(k, array) in case {
-                let element_bytes = array.size as usize
-                    * if array.component_type == GL_FLOAT {
-                        4
-                    } else {
-                        1
-                    };
                 let len = if spare {
                     bytes.len()
                 } else {
-                    (end - base) * element_bytes
+                    (end - base) * array.element_size()
                 };
                 arrays[kind(k)] = Some((array, &bytes[..len]));
             }
