@@ -20,7 +20,6 @@ use crate::commands::buffers::with_stores;
 use crate::context::Context;
 use crate::error::{GlError, GlResult, try_copy};
 use crate::gl::*;
-use crate::lighting::batch::Faces;
 use crate::lighting::lanes::LANES;
 use crate::pipeline::block::InputBlock;
 use crate::pipeline::fetch::ArrayFetch;
@@ -1170,9 +1169,14 @@ impl Context {
         if let ElementIndices::Sequential { first, count } = *indices {
             let threads = threads_for(count);
             if threads > 1
-                && mode == GL_POINTS
-                && stream.reads().faces == Faces::Front
-                && self.draw_points_on_threads(&derived, fetch, &input, (first, count), threads)
+                && self.draw_points_on_threads(
+                    &stream,
+                    &derived,
+                    fetch,
+                    &input,
+                    (first, count),
+                    threads,
+                )
             {
                 return self.end_stream(stream);
             }

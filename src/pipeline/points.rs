@@ -6,6 +6,7 @@
 
 use multiversion::multiversion;
 
+use super::DrawStream;
 use super::block::{InputBlock, OutputBlock};
 use super::clip::ClipPlanes;
 use super::feedback::{FeedbackLayout, FeedbackStorage};
@@ -14,7 +15,7 @@ use super::parallel::{Step, in_order};
 use super::streaming::copy_streaming;
 use super::vertex::DerivedState;
 use crate::context::{Context, RenderMode};
-use crate::lighting::batch::{Faces, Reads, process_blocks};
+use crate::lighting::batch::{Reads, process_blocks};
 use crate::lighting::lanes::{LANES, filled_lanes, lanes_of};
 use crate::state::raster::ViewportMap;
 
@@ -99,15 +100,6 @@ pub(crate) struct PointsSink {
 }
 
 impl PointsSink {
-    /// What laying points out reads of them: the front colors, and the eye coordinates only
-    /// for user clip planes.
-    fn reads(&self) -> Reads {
-        Reads {
-            faces: Faces::Front,
-            eye: self.planes.has_user_planes(),
-        }
-    }
-
     /// Empties `out` for the points of up to `blocks` blocks. Its room is made at its first
     /// use, not per block.
     pub(crate) fn clear(&self, out: &mut LaidOutPoints, blocks: usize) {
@@ -148,6 +140,8 @@ struct PointsDraw<'a> {
     template: InputBlock,
     first: usize,
     count: usize,
+    /// What the draw reads of the lit points (`DrawStream::reads`).
+    reads: Reads,
     sink: PointsSink,
 }
 
@@ -168,7 +162,7 @@ impl PointsDraw<'_> {
                 self.first + self.count,
             );
             let lit = &mut outputs[..batch_len];
-            process_blocks(self.derived, self.sink.reads(), &inputs[..batch_len], lit);
+            process_blocks(self.derived, self.reads, &inputs[..batch_len], lit);
             lit.iter().for_each(&mut keep);
         }
     }
@@ -220,18 +214,19 @@ impl PointsDraw<'_> {
 }
 
 impl Context {
-    /// `count` points from element `first` of `fetch`'s arrays on `threads` threads, when
-    /// the draw is fed back (with a layout) or selected; false, having done nothing,
-    /// otherwise (render mode, or a feedback buffer without a layout).
+    /// `count` points of `stream` from element `first` of `fetch`'s arrays on `threads`
+    /// threads, when the draw is of points, not captured, and fed back (with a layout) or
+    /// selected; false, having done nothing, otherwise (`stream_points_sink`).
     pub(crate) fn draw_points_on_threads(
         &mut self,
+        stream: &DrawStream,
         derived: &DerivedState,
         fetch: &ArrayFetch,
         template: &InputBlock,
         (first, count): (usize, usize),
         threads: usize,
     ) -> bool {
-        let Some(sink) = self.points_sink(self.clip_planes()) else {
+        let Some(sink) = self.stream_points_sink(stream) else {
             return false;
         };
         let draw = PointsDraw {
@@ -240,6 +235,7 @@ impl Context {
             template: *template,
             first,
             count,
+            reads: stream.reads(),
             sink,
         };
         let chunks = count.div_ceil(LANES * CHUNK_BLOCKS);
