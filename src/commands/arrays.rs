@@ -21,6 +21,7 @@ use crate::context::Context;
 use crate::error::{GlError, GlResult, try_copy};
 use crate::gl::*;
 use crate::lighting::lanes::LANES;
+use crate::pipeline::STREAMED_BLOCKS;
 use crate::pipeline::block::InputBlock;
 use crate::pipeline::fetch::ArrayFetch;
 use crate::pipeline::parallel::light_in_order;
@@ -1160,54 +1161,37 @@ impl Context {
     /// The vertices of `indices`, a block at a time: fetched, processed by the batch engine
     /// and streamed into primitive assembly.
     fn draw_arrays_with(&mut self, mode: GLenum, fetch: &ArrayFetch, indices: &ElementIndices) {
-        if matches!(indices, ElementIndices::Listed { .. }) {
+        let ElementIndices::Sequential { first, count } = *indices else {
             return self.draw_elements_with(mode, fetch, indices);
-        }
-        let derived = self.shared_derived();
-        let mut input = InputBlock::with_attribs(&self.current);
-        let mut stream = self.begin_stream(mode);
-        if let ElementIndices::Sequential { first, count } = *indices {
-            let threads = threads_for(count);
-            if threads > 1
-                && self.draw_points_on_threads(
-                    &stream,
-                    &derived,
-                    fetch,
-                    &input,
-                    (first, count),
-                    threads,
-                )
-            {
-                return self.end_stream(stream);
-            }
-            if threads > 1 {
-                let fill = |block: usize, input: &mut InputBlock| {
-                    let start = first + block * LANES;
-                    fetch.fill_run(input, start, LANES.min(first + count - start));
-                };
-                let blocks = count.div_ceil(LANES);
-                let reads = stream.reads();
-                light_in_order(&derived, reads, &input, blocks, threads - 1, fill, |lit| {
-                    self.stream_lit_block(&mut stream, lit)
-                });
-                return self.end_stream(stream);
-            }
-        }
-        let mut block = [0; LANES];
-        let mut len = 0;
-        let mut run_block = |ctx: &mut Context, block: &[usize]| {
-            fetch.fill(&mut input, block);
-            ctx.stream_blocks(&mut stream, &derived, std::slice::from_ref(&input));
         };
-        indices.for_each(|index| {
-            block[len] = index;
-            len += 1;
-            if len == LANES {
-                run_block(self, &block);
-                len = 0;
-            }
-        });
-        run_block(self, &block[..len]);
+        let derived = self.shared_derived();
+        let input = InputBlock::with_attribs(&self.current);
+        let mut stream = self.begin_stream(mode);
+        let threads = threads_for(count);
+        let points = (first, count);
+        if self.draw_points_on_threads(&stream, &derived, fetch, &input, points, threads) {
+            return self.end_stream(stream);
+        }
+        if threads > 1 {
+            let fill = |block: usize, input: &mut InputBlock| {
+                let done = block * LANES;
+                fetch.fill_run(input, first + done, LANES.min(count - done));
+            };
+            let blocks = count.div_ceil(LANES);
+            let reads = stream.reads();
+            light_in_order(&derived, reads, &input, blocks, threads - 1, fill, |lit| {
+                self.stream_lit_block(&mut stream, lit)
+            });
+            return self.end_stream(stream);
+        }
+        // A few blocks at a time, so that the widest kernel serves them. Counted from
+        // `first`: the last index may be usize::MAX.
+        let mut inputs = [input; STREAMED_BLOCKS];
+        for done in (0..count).step_by(STREAMED_BLOCKS * LANES) {
+            let blocks = (count - done).div_ceil(LANES).min(STREAMED_BLOCKS);
+            fetch.fill_runs(&mut inputs[..blocks], first + done, count - done);
+            self.stream_blocks(&mut stream, &derived, &inputs[..blocks]);
+        }
         self.end_stream(stream);
     }
 

@@ -394,13 +394,15 @@ impl<'a> ArrayFetch<'a> {
     }
 
     /// `fill_run` for consecutive blocks: `inputs[k]` gets the elements from
-    /// `first + k * LANES` on, up to `end`. When every array is read as floats (or not at
+    /// `first + k * LANES` on, of the `count` from `first` (a count, not an end, so that a
+    /// run may end at index usize::MAX). When every array is read as floats (or not at
     /// all), they are read an array at a time, each over all the blocks, so that the choice
     /// of array and converter is made once per call rather than once per block; a packed
     /// array of 3 or 4 floats filling every block is sliced once for them all.
     #[inline(always)]
-    pub fn fill_runs(&self, inputs: &mut [InputBlock], first: usize, end: usize) {
+    pub fn fill_runs(&self, inputs: &mut [InputBlock], first: usize, count: usize) {
         let start = |k: usize| first + k * LANES;
+        let len = |k: usize| LANES.min(count - k * LANES);
         let by_array = ALL_KINDS
             .into_iter()
             .zip(&self.arrays)
@@ -411,12 +413,12 @@ impl<'a> ArrayFetch<'a> {
             });
         if !by_array {
             for (k, input) in inputs.iter_mut().enumerate() {
-                self.fill_run(input, start(k), LANES.min(end - start(k)));
+                self.fill_run(input, start(k), len(k));
             }
             return;
         }
         for (k, input) in inputs.iter_mut().enumerate() {
-            input.len = LANES.min(end - start(k));
+            input.len = len(k);
         }
         let full = inputs.iter().all(|input| input.len == LANES);
         for (kind, source) in ALL_KINDS.into_iter().zip(&self.arrays) {
@@ -586,7 +588,7 @@ mod tests {
             }
             let fetch = ArrayFetch::new(base, arrays);
             let mut together = vec![InputBlock::default(); count.div_ceil(LANES)];
-            fetch.fill_runs(&mut together, first, end);
+            fetch.fill_runs(&mut together, first, count);
             for (k, block) in together.iter().enumerate() {
                 let start = first + k * LANES;
                 let mut alone = InputBlock::default();

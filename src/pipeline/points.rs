@@ -51,11 +51,11 @@ pub(crate) fn visible_points(
     )
 }
 
-/// Blocks `inputs` filled with the elements from `start` on (at most to `end`), `LANES` a
-/// block: compiled for AVX2 where the CPU has it, as `visible_points` is.
+/// Blocks `inputs` filled with the elements from `start` on (at most `count` of them),
+/// `LANES` a block: compiled for AVX2 where the CPU has it, as `visible_points` is.
 #[multiversion(targets("x86_64+avx2+fma+bmi1+bmi2+lzcnt+popcnt", "aarch64+neon"))]
-fn fill_runs(fetch: &ArrayFetch, inputs: &mut [InputBlock], start: usize, end: usize) {
-    fetch.fill_runs(inputs, start, end);
+fn fill_runs(fetch: &ArrayFetch, inputs: &mut [InputBlock], start: usize, count: usize) {
+    fetch.fill_runs(inputs, start, count);
 }
 
 /// Lit points laid out away from the context, by another thread, for the calling thread to
@@ -154,12 +154,12 @@ impl PointsDraw<'_> {
         let chunk_end = blocks.min((chunk + 1) * CHUNK_BLOCKS);
         for batch in (chunk * CHUNK_BLOCKS..chunk_end).step_by(LIT_BLOCKS) {
             let batch_len = LIT_BLOCKS.min(chunk_end - batch);
-            let start = self.first + batch * LANES;
+            let done = batch * LANES;
             fill_runs(
                 self.fetch,
                 &mut inputs[..batch_len],
-                start,
-                self.first + self.count,
+                self.first + done,
+                self.count - done,
             );
             let lit = &mut outputs[..batch_len];
             process_blocks(self.derived, self.reads, &inputs[..batch_len], lit);
@@ -215,7 +215,7 @@ impl PointsDraw<'_> {
 
 impl Context {
     /// `count` points of `stream` from element `first` of `fetch`'s arrays on `threads`
-    /// threads, when the draw is of points, not captured, and fed back (with a layout) or
+    /// threads (one: only the calling thread, straight into the feedback buffer), when the draw is of points, not captured, and fed back (with a layout) or
     /// selected; false, having done nothing, otherwise (`stream_points_sink`).
     pub(crate) fn draw_points_on_threads(
         &mut self,
@@ -239,6 +239,12 @@ impl Context {
             sink,
         };
         let chunks = count.div_ceil(LANES * CHUNK_BLOCKS);
+        if threads == 1 {
+            for k in 0..chunks {
+                draw.run(k, |block| self.feedback_points(&draw.sink.planes, block));
+            }
+            return true;
+        }
         let feedback = &mut self.feedback;
         if let (Some(_), FeedbackStorage::Application(memory)) =
             (draw.sink.layout, &mut feedback.storage)
