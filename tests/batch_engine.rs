@@ -453,9 +453,16 @@ fn with_arrays(base: &Context) -> Context {
     ctx
 }
 
+/// Indices `0..count` as a list of GL_UNSIGNED_INT: the same vertices as a sequential draw,
+/// through the indexed path (the post-transform cache, vertex by vertex), a reference that
+/// shares neither its fetch nor its streaming.
+fn listed_indices(count: usize) -> Vec<u8> {
+    (0..count as u32).flat_map(|i| i.to_ne_bytes()).collect()
+}
+
 /// Large glDrawArrays are lit on helper threads and streamed in order: the feedback is the
-/// same, token for token, whatever the thread count, for points and for a strip whose
-/// triangles span the chunks the helpers share out.
+/// same, token for token, whatever the thread count (and the same as the indexed path's), for
+/// points and for a strip whose triangles span the chunks the helpers share out.
 #[test]
 fn draws_do_not_depend_on_the_thread_count() {
     use fflight::commands::arrays::{ArraySources, ElementIndices};
@@ -467,14 +474,22 @@ fn draws_do_not_depend_on_the_thread_count() {
     let sources = ArraySources::new(0)
         .with(ArrayKind::Vertex, &bytes)
         .with(ArrayKind::Normal, &bytes);
+    let listed = listed_indices(count);
     for mode in [GL_POINTS, GL_TRIANGLE_STRIP] {
         let mut results = Vec::new();
-        for threads in [1, 2, 3] {
-            fflight::threads::set_threads(threads).unwrap();
+        // One thread through the indexed path, then 1, 2 and 3 threads.
+        for threads in [0, 1, 2, 3] {
+            fflight::threads::set_threads(threads.max(1)).unwrap();
             let mut ctx = with_arrays(&base);
             ctx.feedback_buffer(i32::MAX, GL_3D_COLOR, 1).unwrap();
             ctx.render_mode(GL_FEEDBACK).unwrap();
-            let all = ElementIndices::Sequential { first: 0, count };
+            let all = match threads {
+                0 => ElementIndices::Listed {
+                    index_type: GL_UNSIGNED_INT,
+                    bytes: &listed,
+                },
+                _ => ElementIndices::Sequential { first: 0, count },
+            };
             ctx.draw_arrays_from(mode, &sources, &all).unwrap();
             let (written, finished) = ctx.render_mode(GL_RENDER).unwrap();
             let values = finished.expect("feedback ended").values;
@@ -482,8 +497,9 @@ fn draws_do_not_depend_on_the_thread_count() {
             results.push(values.iter().map(|v| v.to_bits()).collect::<Vec<_>>());
         }
         fflight::threads::set_threads(0).unwrap();
-        assert!(results[1] == results[0], "2 threads, mode {mode:#x}");
-        assert!(results[2] == results[0], "3 threads, mode {mode:#x}");
+        for (k, result) in results.iter().enumerate().skip(1) {
+            assert!(*result == results[0], "{k} threads, mode {mode:#x}");
+        }
     }
 }
 
@@ -689,7 +705,7 @@ fn every_instruction_set_agrees_with_the_scalar_path() {
 
 /// Large glDrawArrays(GL_POINTS) in feedback or selection mode run chunk by chunk on the
 /// threads (`pipeline::points`): the same feedback values, token for token, and the same hit
-/// records as one thread, with a user clip plane culling some points, and with a feedback
+/// records on any thread count as the indexed path gives, with a user clip plane culling some points, and with a feedback
 /// buffer too small for them (GL_RenderMode then returns -1 and the values that fit).
 #[test]
 fn threaded_points_equal_one_thread() {
@@ -709,11 +725,13 @@ fn threaded_points_equal_one_thread() {
         (GL_FEEDBACK, 100_003, false),
         (GL_SELECT, 0, true),
     ];
+    let listed = listed_indices(count);
     let mut unclipped = 0;
     for (mode, size, plane) in cases {
         let mut results = Vec::new();
-        for threads in [1, 2, 3] {
-            fflight::threads::set_threads(threads).unwrap();
+        // One thread through the indexed path, then 1, 2 and 3 threads.
+        for threads in [0, 1, 2, 3] {
+            fflight::threads::set_threads(threads.max(1)).unwrap();
             let mut ctx = with_arrays(&base);
             if plane {
                 ctx.clip_plane(GL_CLIP_PLANE0, [1.0, 0.5, 0.0, 0.2])
@@ -730,7 +748,13 @@ fn threaded_points_equal_one_thread() {
                 ctx.init_names().unwrap();
                 ctx.push_name(7).unwrap();
             }
-            let all = ElementIndices::Sequential { first: 0, count };
+            let all = match threads {
+                0 => ElementIndices::Listed {
+                    index_type: GL_UNSIGNED_INT,
+                    bytes: &listed,
+                },
+                _ => ElementIndices::Sequential { first: 0, count },
+            };
             ctx.draw_arrays_from(GL_POINTS, &sources, &all).unwrap();
             let (written, finished) = ctx.render_mode(GL_RENDER).unwrap();
             let finished = finished.expect("feedback or selection ended");
@@ -752,13 +776,11 @@ fn threaded_points_equal_one_thread() {
         } else {
             assert_eq!((*written, hits.len()), (1, 4), "one hit record of one name");
         }
-        assert!(
-            results[1] == results[0],
-            "2 threads, {mode:#x} {size} {plane}"
-        );
-        assert!(
-            results[2] == results[0],
-            "3 threads, {mode:#x} {size} {plane}"
-        );
+        for (k, result) in results.iter().enumerate().skip(1) {
+            assert!(
+                *result == results[0],
+                "{k} threads, {mode:#x} {size} {plane}"
+            );
+        }
     }
 }
