@@ -10,7 +10,7 @@ use std::sync::Arc;
 
 use crate::lighting::batch::process_blocks;
 use crate::lighting::lanes::LANES;
-use crate::pipeline::block::{InputBlock, OutputBlock};
+use crate::pipeline::block::{InputBlock, OutputBlock, lanes4_set};
 use crate::pipeline::vertex::CurrentAttribs;
 use crate::pipeline::vertex::DerivedState;
 use crate::state::convert::Component;
@@ -67,22 +67,16 @@ fn push_varying(
             block.set_color(lane, attribs.color);
         }
         if varying.contains(Varying::SECONDARY_COLOR) {
-            set_lane(&mut block.secondary_color, lane, attribs.secondary_color);
+            lanes4_set(&mut block.secondary_color, lane, attribs.secondary_color);
         }
         if varying.contains(Varying::TEX_COORD) {
-            set_lane(&mut block.tex_coord, lane, attribs.tex_coord);
+            lanes4_set(&mut block.tex_coord, lane, attribs.tex_coord);
         }
         if varying.contains(Varying::EDGE_FLAG) {
             block.edge_flag[lane] = attribs.edge_flag;
         }
     }
     block.len += 1;
-}
-
-fn set_lane(lanes: &mut crate::pipeline::block::Lanes4, lane: usize, value: Vec4) {
-    for (component, v) in lanes.iter_mut().zip(value.to_array()) {
-        component[lane] = v;
-    }
 }
 
 impl Context {

@@ -11,7 +11,8 @@ use crate::lighting::{FaceColors, LitVertex};
 /// Four components per lane.
 pub type Lanes4 = [LanesF32; 4];
 
-fn lanes4_set(lanes: &mut Lanes4, lane: usize, value: Vec4) {
+/// Sets lane `lane` of four-component lanes to `value`.
+pub(crate) fn lanes4_set(lanes: &mut Lanes4, lane: usize, value: Vec4) {
     for (component, v) in lanes.iter_mut().zip(value.to_array()) {
         component[lane] = v;
     }
