@@ -1158,8 +1158,9 @@ impl Context {
         Ok(())
     }
 
-    /// The vertices of `indices`, a block at a time: fetched, processed by the batch engine
-    /// and streamed into primitive assembly.
+    /// The vertices of `indices`: runs of consecutive elements fetched a few blocks at a
+    /// time (split among the threads when the draw is large), processed by the batch engine
+    /// and streamed into primitive assembly; listed indices through the post-transform cache.
     fn draw_arrays_with(&mut self, mode: GLenum, fetch: &ArrayFetch, indices: &ElementIndices) {
         let ElementIndices::Sequential { first, count } = *indices else {
             return self.draw_elements_with(mode, fetch, indices);
@@ -1168,8 +1169,8 @@ impl Context {
         let input = InputBlock::with_attribs(&self.current);
         let mut stream = self.begin_stream(mode);
         let threads = threads_for(count);
-        let points = (first, count);
-        if self.draw_points_on_threads(&stream, &derived, fetch, &input, points, threads) {
+        let range = (first, count);
+        if self.draw_points_on_threads(&stream, &derived, fetch, &input, range, threads) {
             return self.end_stream(stream);
         }
         if threads > 1 {
