@@ -705,8 +705,9 @@ fn every_instruction_set_agrees_with_the_scalar_path() {
 
 /// Large glDrawArrays(GL_POINTS) in feedback or selection mode run chunk by chunk on the
 /// threads (`pipeline::points`): the same feedback values, token for token, and the same hit
-/// records on any thread count as the indexed path gives, with a user clip plane culling some points, and with a feedback
-/// buffer too small for them (GL_RenderMode then returns -1 and the values that fit).
+/// records on any thread count as the indexed path gives, with a user clip plane culling
+/// some points, and with a feedback buffer too small for them (GL_RenderMode then returns -1
+/// and the values that fit).
 #[test]
 fn threaded_points_equal_one_thread() {
     use fflight::commands::arrays::{ArraySources, ElementIndices};

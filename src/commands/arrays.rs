@@ -1170,7 +1170,7 @@ impl Context {
         let mut stream = self.begin_stream(mode);
         let threads = threads_for(count);
         let range = (first, count);
-        if self.draw_points_on_threads(&stream, &derived, fetch, &input, range, threads) {
+        if self.draw_points_in_chunks(&stream, &derived, fetch, &input, range, threads) {
             return self.end_stream(stream);
         }
         if threads > 1 {

@@ -1,8 +1,9 @@
-//! Large `glDrawArrays(GL_POINTS)` in feedback or selection mode on several threads. Points
-//! need no assembly, so a chunk of them is fetched, lit, culled and laid out as feedback
-//! values (or reduced to its hits' extreme depths) by whichever thread takes it, and the
-//! calling thread appends the chunks' results in order: the same values, in the same order,
-//! as one thread streaming the points (`Context::feedback_points`).
+//! `glDrawArrays(GL_POINTS)` in feedback or selection mode, in chunks. Points need no
+//! assembly, so a chunk of them is fetched, lit a few blocks at a time, culled and laid out as
+//! feedback values (or reduced to its hits' extreme depths). On one thread the chunks go
+//! straight into the buffer; on several, by whichever thread takes a chunk, and the calling
+//! thread appends the chunks' results in order: the same values, in the same order, as one
+//! thread streaming the points (`Context::feedback_points`).
 
 use multiversion::multiversion;
 
@@ -214,10 +215,11 @@ impl PointsDraw<'_> {
 }
 
 impl Context {
-    /// `count` points of `stream` from element `first` of `fetch`'s arrays on `threads`
-    /// threads (one: only the calling thread, straight into the feedback buffer), when the draw is of points, not captured, and fed back (with a layout) or
-    /// selected; false, having done nothing, otherwise (`stream_points_sink`).
-    pub(crate) fn draw_points_on_threads(
+    /// `count` points of `stream` from element `first` of `fetch`'s arrays in chunks on
+    /// `threads` threads (one: the calling thread alone, straight into the buffer), when the
+    /// draw is of points, not captured, and fed back (with a layout) or selected; false,
+    /// having done nothing, otherwise (`stream_points_sink`).
+    pub(crate) fn draw_points_in_chunks(
         &mut self,
         stream: &DrawStream,
         derived: &DerivedState,
