@@ -8,7 +8,7 @@ use crate::gl::*;
 use std::collections::VecDeque;
 use std::sync::Arc;
 
-use crate::lighting::batch::process_blocks;
+use crate::lighting::batch::{Reads, process_blocks};
 use crate::lighting::lanes::LANES;
 use crate::pipeline::block::{InputBlock, OutputBlock, lanes4_set};
 use crate::pipeline::vertex::CurrentAttribs;
@@ -438,8 +438,13 @@ impl Context {
             && primitive.pending.block(primitive.filling).len > 0;
         let used = primitive.filling + usize::from(partial);
         if used > 0 {
-            let derived = self.shared_derived();
-            self.light_and_stream(&mut primitive, &derived, used);
+            // Lit with the context's derived state borrowed, not shared: an `Arc` clone and
+            // drop per batch are two atomic operations, which some hosts make slow.
+            let reads = primitive.stream.reads();
+            primitive.pending.light(self.derived(), reads, used);
+            for output in &primitive.pending.outputs[..used] {
+                self.stream_lit_block(&mut primitive.stream, output);
+            }
             if let Some(units) = &primitive.units {
                 units.capture_block(primitive.pending.block(0), &mut self.capture);
             }
@@ -527,28 +532,6 @@ impl Context {
             }
         }
     }
-
-    /// Lights the first `used` pending blocks and streams them into the draw, in order.
-    fn light_and_stream(
-        &mut self,
-        primitive: &mut PrimitiveInProgress,
-        derived: &DerivedState,
-        used: usize,
-    ) {
-        let PendingBlocks {
-            halves, outputs, ..
-        } = &mut primitive.pending;
-        let first = used.min(HALF_BLOCKS);
-        let reads = primitive.stream.reads();
-        process_blocks(derived, reads, &halves[0][..first], &mut outputs[..first]);
-        if used > HALF_BLOCKS {
-            let (_, second) = outputs.split_at_mut(HALF_BLOCKS);
-            process_blocks(derived, reads, &halves[1][..used - HALF_BLOCKS], second);
-        }
-        for output in &outputs[..used] {
-            self.stream_lit_block(&mut primitive.stream, output);
-        }
-    }
 }
 
 /// Blocks per half batch: 512 vertices.
@@ -622,6 +605,19 @@ impl Clone for PendingBlocks {
 }
 
 impl PendingBlocks {
+    /// Lights the first `used` blocks into `outputs`.
+    fn light(&mut self, derived: &DerivedState, reads: Reads, used: usize) {
+        let PendingBlocks {
+            halves, outputs, ..
+        } = self;
+        let first = used.min(HALF_BLOCKS);
+        process_blocks(derived, reads, &halves[0][..first], &mut outputs[..first]);
+        if used > HALF_BLOCKS {
+            let (_, second) = outputs.split_at_mut(HALF_BLOCKS);
+            process_blocks(derived, reads, &halves[1][..used - HALF_BLOCKS], second);
+        }
+    }
+
     /// The first `used` blocks are empty again.
     fn restart(&mut self, used: usize) {
         for index in 0..used {
