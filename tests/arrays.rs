@@ -1359,3 +1359,44 @@ fn array_element_sets_the_current_attributes_and_color_material() {
     .unwrap();
     assert_eq!(before, after);
 }
+
+/// The range of listed indices (the smallest and largest, scanned before every glDrawElements
+/// in the index's own type, vectorized) equals a plain scan for every index type, at every
+/// alignment, for counts around the vector widths, with a partial index at the end ignored,
+/// and with the extreme values of each type.
+#[test]
+fn listed_index_ranges_equal_a_plain_scan() {
+    let mut rng = Rng(0x51);
+    for (ty, size, max) in [
+        (GL_UNSIGNED_BYTE, 1, u8::MAX as usize),
+        (GL_UNSIGNED_SHORT, 2, u16::MAX as usize),
+        (GL_UNSIGNED_INT, 4, u32::MAX as usize),
+    ] {
+        for count in (0..80).chain([255, 256, 257, 1000, 4099]) {
+            for offset in 0..size {
+                let indices: Vec<usize> = (0..count)
+                    .map(|_| match rng.below(8) {
+                        0 => 0,
+                        1 => max,
+                        _ => rng.below(max) + 1,
+                    })
+                    .collect();
+                let mut bytes = vec![0xAB; offset];
+                bytes.extend(index_bytes(&indices, ty));
+                // A partial index at the end counts for nothing.
+                bytes.extend(vec![0xFF; size - 1]);
+                let listed = ElementIndices::Listed {
+                    index_type: ty,
+                    bytes: &bytes[offset..],
+                };
+                let expected = indices.iter().min().zip(indices.iter().max());
+                let expected = expected.map(|(&lo, &hi)| (lo, hi));
+                assert_eq!(
+                    listed.range(),
+                    expected,
+                    "type {ty:#x}, count {count}, offset {offset}"
+                );
+            }
+        }
+    }
+}

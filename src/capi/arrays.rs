@@ -61,16 +61,18 @@ unsafe fn sources<'a>(
 /// The enabled arrays' pointers must hold every element `indices` references.
 unsafe fn draw(ctx: &mut Context, mode: GLenum, indices: GlResult<ElementIndices>) -> GlResult {
     let prepared = indices.and_then(|indices| {
-        let sources = match ctx.array_spans(&indices)? {
+        let (range, sources) = match ctx.array_spans(&indices)? {
             // SAFETY: forwarded from the caller.
-            Some((base, spans, unit_spans)) => unsafe { sources(base, &spans, &unit_spans) },
+            Some((range, spans, unit_spans)) => (Some(range), unsafe {
+                sources(range.0, &spans, &unit_spans)
+            }),
             // Nothing is read; the call still validates as a draw.
-            None => ArraySources::default(),
+            None => (None, ArraySources::default()),
         };
-        Ok((indices, sources))
+        Ok((indices, range, sources))
     });
     let compiled = ctx.record_checked(|ctx| {
-        let (indices, sources) = prepared.as_ref().map_err(|e| *e)?;
+        let (indices, _, sources) = prepared.as_ref().map_err(|e| *e)?;
         Ok(Command::Draw(Box::new(
             ctx.record_draw(mode, sources, indices)?,
         )))
@@ -78,8 +80,9 @@ unsafe fn draw(ctx: &mut Context, mode: GLenum, indices: GlResult<ElementIndices
     if compiled {
         return Ok(());
     }
-    let (indices, sources) = prepared?;
-    ctx.draw_arrays_from(mode, &sources, &indices)
+    let (indices, range, sources) = prepared?;
+    // The range `array_spans` found: the indices are not scanned again.
+    ctx.draw_arrays_over(mode, &sources, &indices, || range)
 }
 
 /// `ptr` must stay valid, holding the elements later draws use, until it is replaced.
