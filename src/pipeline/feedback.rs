@@ -398,6 +398,7 @@ impl FeedbackBuffer {
     /// Appends `len` values (at most a triangle's: 2 + 3 * 12) that `write` puts in the slice
     /// it is given: in place in the application's memory when they fit, else through
     /// `values_of`, which keeps those that fit and marks the overflow.
+    #[inline(always)]
     pub(crate) fn append_with(&mut self, len: usize, write: impl FnOnce(&mut [f32])) {
         if let FeedbackStorage::Application(memory) = &mut self.storage
             && self.capacity - self.written >= len
@@ -406,6 +407,14 @@ impl FeedbackBuffer {
             self.written += len;
             return;
         }
+        self.append_staged(len, write);
+    }
+
+    /// `append_with` where the values do not go straight into the application's memory:
+    /// out of the way of the triangles of a mesh, which go there one by one.
+    #[cold]
+    #[inline(never)]
+    fn append_staged(&mut self, len: usize, write: impl FnOnce(&mut [f32])) {
         let mut staged = [0.0; 2 + 3 * MAX_VERTEX_VALUES];
         write(&mut staged[..len]);
         self.values_of(&staged[..len]);

@@ -17,7 +17,7 @@
 //! selection depths) that the calling thread writes in order; the calling thread runs a chunk
 //! itself straight into the buffer when it is the next one. Which thread lights a vertex, and
 //! with which others, changes nothing in its bits, so the result is the same for any thread
-//! count. The working set is fixed: per thread a cache (about 1 MiB) and two outputs of at
+//! count. The working set is fixed: per thread a cache (about 0.5 MiB) and two outputs of at
 //! most a chunk's values.
 
 use std::sync::Mutex;
@@ -90,7 +90,10 @@ pub struct MeshCache {
     polygon: Vec<PolygonVertex>,
 }
 
-/// What the cache keeps of each slot's vertex.
+/// What the cache keeps of each slot's vertex. A triangle that needs clipping (rare: it
+/// crosses a plane) lights its corners again (`relight`), to the same bits, so that the
+/// cache keeps no whole vertex: gathering each from its lanes cost more than the rest of
+/// keeping it, and the cache is smaller.
 #[derive(Debug, Default)]
 struct Slots {
     /// The planes the vertex is outside of (`ClipPlanes::outside_mask`).
@@ -98,8 +101,6 @@ struct Slots {
     /// `2 * N` values: the vertex's feedback values with the front colors, then with the back
     /// colors (in selection mode, its window x, y, z).
     values: Vec<f32>,
-    /// The vertex, for the triangles that need clipping.
-    vertices: Vec<ProcessedVertex>,
 }
 
 /// Scratch space: a copy of a context starts with an empty cache.
@@ -347,7 +348,6 @@ impl MeshCache {
             self.slots = Slots {
                 masks: vec![0; slots],
                 values: vec![0.0; slots * MAX_SLOT_VALUES],
-                vertices: vec![ProcessedVertex::default(); slots],
             };
             self.triangles.reserve(WINDOW_TRIANGLES);
             self.miss_indices.reserve(3 * WINDOW_TRIANGLES);
@@ -388,6 +388,7 @@ impl MeshCache {
                         }
                         // Two corners of this triangle share a slot: a spare one, used once.
                         slot = SLOTS + k;
+                        self.tags[slot].index = index;
                         spare = true;
                     } else {
                         tag.index = index;
@@ -443,19 +444,12 @@ impl MeshCache {
     fn send_triangles<const N: usize>(&mut self, sink: &mut impl TriangleSink, draw: &MeshDraw) {
         for &triangle in &self.triangles {
             let [a, b, c] = triangle.map(|slot| slot as usize);
-            let Slots {
-                masks,
-                values,
-                vertices,
-            } = &self.slots;
+            let Slots { masks, values } = &self.slots;
             let masks = [masks[a], masks[b], masks[c]];
             if masks[0] | masks[1] | masks[2] != 0 {
                 if masks[0] & masks[1] & masks[2] == 0 {
-                    sink.clipped(
-                        &draw.planes,
-                        [&vertices[a], &vertices[b], &vertices[c]],
-                        &mut self.polygon,
-                    );
+                    let [a, b, c] = relight(draw, [a, b, c].map(|slot| self.tags[slot].index));
+                    sink.clipped(&draw.planes, [&a, &b, &c], &mut self.polygon);
                 }
                 continue;
             }
@@ -528,7 +522,18 @@ impl Slots {
                 );
                 values[face * N..][..N].copy_from_slice(&encoded[..N]);
             }
-            self.vertices[slot] = output.vertex(lane);
         }
     }
+}
+
+/// The vertices of array elements `indices`, lit again: the bits they had when the cache
+/// kept them, since a lane's results do not depend on the others of its block.
+#[cold]
+#[inline(never)]
+fn relight(draw: &MeshDraw, indices: [usize; 3]) -> [ProcessedVertex; 3] {
+    let mut input = draw.template;
+    draw.fetch.fill(&mut input, &indices);
+    let mut output = [OutputBlock::default()];
+    process_blocks(draw.derived, Faces::Both, &[input], &mut output);
+    [0, 1, 2].map(|lane| output[0].vertex(lane))
 }
