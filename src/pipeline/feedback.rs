@@ -410,8 +410,9 @@ impl FeedbackBuffer {
         self.append_staged(len, write);
     }
 
-    /// `append_with` where the values do not go straight into the application's memory:
-    /// out of the way of the triangles of a mesh, which go there one by one.
+    /// `append_with` where the values do not go straight into the application's memory (they
+    /// overflow it, or the context keeps them: the Rust API): out of line, so that the usual
+    /// case compiles into the mesh's loop over its triangles.
     #[cold]
     #[inline(never)]
     fn append_staged(&mut self, len: usize, write: impl FnOnce(&mut [f32])) {
