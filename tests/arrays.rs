@@ -1214,8 +1214,9 @@ fn draws_read_only_the_elements_their_indices_reference() {
 
     // Many indices, all within the four elements: the vertex data read is four elements,
     // however many vertices are drawn (and glDrawRangeElements' range is not trusted,
-    // neither too wide nor too narrow).
-    let count = 200_000;
+    // neither too wide nor too narrow). Enough for the draws to run on two threads
+    // (`MIN_VERTICES_PER_THREAD` each), few enough for memcheck (make test-valgrind-rust).
+    let count = 3 * fflight::threads::MIN_VERTICES_PER_THREAD;
     let indices: Vec<u8> = (0..count).map(|_| rng.below(4) as u8).collect();
     let guarded_indices = Guarded::new(&indices);
     reset_current();
