@@ -740,8 +740,10 @@ fn bulk_lighting_reads_and_writes_every_layout() {
     let sentinel = 0xA5u8;
     let mut rng = Rng(77);
     for (c, case) in cases.iter().enumerate() {
+        // The unaligned case on three threads too (one case: the reference is slow under
+        // memcheck, make test-valgrind-rust).
         let counts: &[usize] = match c {
-            0 | 3 => &[1, 7, 8, 9, 127, 129, 1003, 3 * 16384 + 13],
+            3 => &[1, 7, 8, 9, 127, 129, 1003, 3 * 16384 + 13],
             _ => &[1, 7, 8, 9, 127, 129, 1003],
         };
         for &count in counts {

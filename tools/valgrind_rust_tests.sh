@@ -57,7 +57,7 @@ status=0
     cat "$out/run.txt"
     echo "sweep-program target/sweep/sweep"
 } | xargs -P2 -L1 sh -c '
-    name=$0 exe=$1
+    name=$0 exe=$1 began=$(date +%s)
     if [ "$name" = sweep-program ]; then
         SWEEP_ROUNDS=1 SWEEP_SECONDS=5 SWEEP_CALL_SECONDS=600 timeout 1200 '"$VALGRIND"' "$exe" \
             > '"$out"'/$name.out 2> '"$out"'/$name.err
@@ -69,7 +69,7 @@ status=0
         echo "valgrind-rust: $name failed ($rc)"; tail -n 60 '"$out"'/$name.err; tail -n 20 '"$out"'/$name.out
         exit 255
     fi
-    echo "valgrind-rust: $name clean"
+    echo "valgrind-rust: $name clean ($(( $(date +%s) - began )) s)"
 ' || status=1
 echo "test-valgrind-rust: $(wc -l < "$out/run.txt") test binaries and the sweep under memcheck in $(( $(date +%s) - start )) s"
 exit $status
