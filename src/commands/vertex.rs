@@ -111,8 +111,9 @@ impl Context {
         self.color(Vec4::new(r, g, b, a));
     }
 
-    /// glNormal with its components apart (`vertex_xyzw`).
-    #[inline(never)]
+    /// glNormal with its components apart, compiled into the C entry points: stored from
+    /// registers, with no call (glNormal3fv 45 -> 36 instructions, callgrind).
+    #[inline(always)]
     pub(crate) fn normal_xyz(&mut self, x: f32, y: f32, z: f32) {
         self.normal(Vec3::new(x, y, z));
     }
