@@ -184,10 +184,11 @@ SANITIZE_PROGRAMS := $(patsubst c_tests/%.c,$(SANITIZE_DIR)/%.ok,$(wildcard c_te
 # Under its SONAME, which the programs name and find by their run path.
 SANITIZE_SO := $(SANITIZE_DIR)/lib/libfflight.so.0
 test-sanitize: build
-	@mkdir -p $(SANITIZE_DIR)/lib
-	@cp target/debug/libfflight.so $(SANITIZE_SO)
 	@$(MAKE) --no-print-directory -j2 $(SANITIZE_PROGRAMS)
 	@echo "test-sanitize: $(words $(SANITIZE_PROGRAMS)) programs under ASan and UBSan, no report"
+
+$(SANITIZE_SO): target/debug/libfflight.so
+	@mkdir -p $(@D) && cp $< $@
 
 # One program: built, run, its sanitizer reports (stderr) grepped; a clean run leaves .ok, a
 # report keeps the program. Client libraries (ffl-libs: libGLU) come before libfflight.so,
