@@ -13,7 +13,7 @@ use super::clip::ClipPlanes;
 use super::feedback::{FeedbackLayout, FeedbackStorage};
 use super::fetch::ArrayFetch;
 use super::parallel::{Step, in_order};
-use super::streaming::copy_streaming;
+use super::streaming::{copy_streaming, copy_streaming_piece, fence};
 use super::vertex::DerivedState;
 use crate::context::{Context, RenderMode};
 use crate::lighting::batch::{Reads, process_blocks};
@@ -64,24 +64,76 @@ fn fill_runs(fetch: &ArrayFetch, inputs: &mut [InputBlock], start: usize, count:
 /// `values`), or the extreme depths of their selection hits.
 ///
 /// A large draw into the application's memory gives each its place there instead
-/// (`destination`): its values are copied by the thread that next lays points out into it
-/// (`PointsSink::clear`), or when it is dropped, so that the copies are shared among the
-/// threads rather than all made by the calling thread.
+/// (`destination`): its values are copied by the thread that next lays points out into it,
+/// a piece per block while it lays out the next chunk (`PointsSink::clear`, `lay_out`), or
+/// when it is dropped. The copies are shared among the threads rather than all made by the
+/// calling thread, and their stores drain while the points are lit (1M points, 1 light, 2
+/// threads on the Xeon: 12.3-14.5 -> 10.6-11.2 ns/vertex against a copy per chunk).
 #[derive(Debug, Default)]
 pub(crate) struct LaidOutPoints<'a> {
     values: Vec<f32>,
     len: usize,
     hits: Option<(f32, f32)>,
     destination: Option<&'a mut [f32]>,
+    /// The values of the chunk before, being copied to their place.
+    delivering: Delivery<'a>,
+}
+
+/// Values on their way to their place in the application's memory, a piece at a time.
+#[derive(Debug, Default)]
+struct Delivery<'a> {
+    values: Vec<f32>,
+    /// The rest of the place, and of the values (from `done`) to copy there.
+    to: &'a mut [f32],
+    done: usize,
+    /// Values per piece.
+    piece: usize,
+}
+
+impl Delivery<'_> {
+    /// Copies the next piece, or every value left with `all`; fenced after the last.
+    fn copy(&mut self, all: bool) {
+        if self.to.is_empty() {
+            return;
+        }
+        let count = if all {
+            self.to.len()
+        } else {
+            self.piece.min(self.to.len())
+        };
+        let (piece, rest) = std::mem::take(&mut self.to).split_at_mut(count);
+        copy_streaming_piece(piece, &self.values[self.done..][..count]);
+        self.to = rest;
+        self.done += count;
+        if self.to.is_empty() {
+            fence();
+        }
+    }
 }
 
 impl LaidOutPoints<'_> {
-    /// Copies the values to their destination, if they have one: the first as many as it
-    /// holds.
+    /// Copies every value still to go to its place: those being delivered, then those whose
+    /// place was just given.
     fn deliver(&mut self) {
+        self.delivering.copy(true);
         if let Some(to) = self.destination.take() {
             copy_streaming(to, &self.values[..to.len()]);
         }
+    }
+
+    /// Starts delivering the values whose place was given, in `pieces` pieces (finishing
+    /// what was being delivered before): their memory becomes the delivery's, the
+    /// delivery's theirs.
+    fn start_delivery(&mut self, pieces: usize) {
+        self.delivering.copy(true);
+        let Some(to) = self.destination.take() else {
+            return;
+        };
+        std::mem::swap(&mut self.values, &mut self.delivering.values);
+        // Whole lines of 16 values, at least.
+        self.delivering.piece = to.len().div_ceil(pieces).next_multiple_of(16);
+        self.delivering.to = to;
+        self.delivering.done = 0;
     }
 }
 
@@ -104,7 +156,7 @@ impl PointsSink {
     /// Empties `out` for the points of up to `blocks` blocks. Its room is made at its first
     /// use, not per block.
     pub(crate) fn clear(&self, out: &mut LaidOutPoints, blocks: usize) {
-        out.deliver();
+        out.start_delivery(blocks);
         out.len = 0;
         out.hits = None;
         if let Some(layout) = &self.layout {
@@ -116,6 +168,7 @@ impl PointsSink {
     /// Appends the drawn points of `block` (front colors) to `out`: the same values, in the
     /// same order, as `Context::feedback_points`.
     pub(crate) fn lay_out(&self, block: &OutputBlock, out: &mut LaidOutPoints) {
+        out.delivering.copy(false);
         let (visible, window) = visible_points(&self.viewport, &self.planes, block);
         match &self.layout {
             Some(layout) => {
@@ -174,6 +227,7 @@ impl PointsDraw<'_> {
     fn run_into(&self, chunk: usize, out: &mut LaidOutPoints) {
         self.sink.clear(out, CHUNK_BLOCKS);
         self.run(chunk, |block| self.sink.lay_out(block, out));
+        out.delivering.copy(true);
     }
 
     /// All `chunks` chunks on `helpers` helper threads and the calling thread, fed back into

@@ -26,15 +26,38 @@ pub fn copy_streaming(to: &mut [f32], from: &[f32]) {
     let to = &mut to[..from.len()];
     #[cfg(target_arch = "x86_64")]
     if from.len() >= STREAMING_MIN {
-        return stream_sse(to, from);
+        stream_sse(to, from);
+        return fence();
     }
     to.copy_from_slice(from);
 }
 
-/// `copy_streaming` with SSE's `movntps`, four values at a time into 16-byte aligned places.
+/// A piece of a long copy made a piece at a time between other work, so that the stores
+/// drain while that work runs: `copy_streaming` without its threshold and without the fence,
+/// which `fence` gives once the last piece is copied.
+pub(crate) fn copy_streaming_piece(to: &mut [f32], from: &[f32]) {
+    let to = &mut to[..from.len()];
+    #[cfg(target_arch = "x86_64")]
+    return stream_sse(to, from);
+    #[cfg(not(target_arch = "x86_64"))]
+    to.copy_from_slice(from);
+}
+
+/// Orders the streaming stores made so far before any later store, as plain stores are
+/// ordered: before the values are handed to another thread or to the application.
+pub(crate) fn fence() {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: SSE is part of x86-64.
+    unsafe {
+        std::arch::x86_64::_mm_sfence()
+    };
+}
+
+/// `copy_streaming` with SSE's `movntps`, four values at a time into 16-byte aligned places,
+/// unfenced.
 #[cfg(target_arch = "x86_64")]
 fn stream_sse(to: &mut [f32], from: &[f32]) {
-    use std::arch::x86_64::{_mm_loadu_ps, _mm_sfence, _mm_stream_ps};
+    use std::arch::x86_64::{_mm_loadu_ps, _mm_stream_ps};
     // The values before the first 16-byte boundary of `to`, plainly.
     let head = to.as_ptr().align_offset(16).min(to.len());
     to[..head].copy_from_slice(&from[..head]);
@@ -50,9 +73,6 @@ fn stream_sse(to: &mut [f32], from: &[f32]) {
     to_fours
         .into_remainder()
         .copy_from_slice(from_fours.remainder());
-    // SAFETY: SSE is part of x86-64. The fence orders the streaming stores before any later
-    // store, as plain stores are ordered.
-    unsafe { _mm_sfence() };
 }
 
 #[cfg(test)]
