@@ -24,7 +24,7 @@ RUNS = 7  # timed runs per scene and process, after the program's own warm-up ru
 # Processes per library and scene, the two libraries alternating: the reported time is the
 # median of the processes' medians. The machine is shared, and one process of either library
 # can land in a slow minute (OSMesa's own median moved by 1.7x between two processes).
-ROUNDS = 3
+ROUNDS = 5
 PLOT_RUNS = 5
 TIMEOUT = 600  # seconds per program: a hang is a failure, not a stalled `make bench`
 # Memory bound: 1 MiB per fflight thread (a worker's stack and buffers) plus this allowance
@@ -44,6 +44,20 @@ TIMED = [
 MEMORY = ["memory_bulk_10M", "memory_arrays_10M"]
 
 failures = []
+# CPU time the hypervisor gave other guests while each library's programs ran, in ticks
+# of /proc/stat (steal, and every state together): a virtual machine's second core can be
+# taken away, and a library that uses both cores loses more then.
+stolen = {}
+
+
+def cpu_ticks():
+    """(steal, total) ticks of all CPUs so far, from /proc/stat; (0, 0) where unreadable."""
+    try:
+        with open("/proc/stat") as f:
+            fields = [int(v) for v in f.readline().split()[1:]]
+    except (OSError, ValueError):
+        return 0, 0
+    return (fields[7] if len(fields) > 7 else 0), sum(fields)
 
 
 def run(binary, scene, vertices, runs=RUNS, threads=None):
@@ -54,8 +68,13 @@ def run(binary, scene, vertices, runs=RUNS, threads=None):
         env["FFLIGHT_THREADS"] = str(threads)
     cmd = [str(binary), scene, str(vertices), str(runs)]
     print(f"bench: {' '.join(cmd[1:])} ({binary.name})", file=sys.stderr, flush=True)
+    before = cpu_ticks()
     try:
         done = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=TIMEOUT)
+        after = cpu_ticks()
+        total = stolen.setdefault(binary.name, [0, 0])
+        total[0] += after[0] - before[0]
+        total[1] += after[1] - before[1]
     except subprocess.TimeoutExpired:
         failures.append(f"{binary.name} {scene}: no result after {TIMEOUT} s")
         return None
@@ -195,6 +214,10 @@ def main():
     with open("/proc/loadavg") as f:  # other work on the machine skews the timings
         load = f.read().split()[0]
     rows, notes = timed_rows(osmesa, fflight, args.vertices)
+    shares = [f"{name} {100 * steal / total:.1f}%"
+              for name, (steal, total) in stolen.items() if total > 0]
+    notes.append("CPU time (both cores) stolen by the hypervisor during each library's runs: "
+                 + ", ".join(shares))
     rows += memory_rows(fflight, 10 * args.vertices)
     plotted = plot(osmesa, fflight, args.vertices, args.bench_dir,
                    f"glDrawArrays(GL_POINTS) + GL_3D_COLOR feedback, {args.vertices} points\n{cpu}")
