@@ -23,7 +23,8 @@ from pathlib import Path
 RUNS = 7  # timed runs per scene and process, after the program's own warm-up run
 # Processes per library and scene, the two libraries alternating: the reported time is the
 # median of the processes' medians. The machine is shared, and one process of either library
-# can land in a slow minute (OSMesa's own median moved by 1.7x between two processes).
+# can land in a slow minute (OSMesa's own median moved by 1.7x between two processes; a
+# scene's ratio by 2.4x between rounds of one run at stop 26, hence five rather than three).
 ROUNDS = 5
 PLOT_RUNS = 5
 TIMEOUT = 600  # seconds per program: a hang is a failure, not a stalled `make bench`
