@@ -55,9 +55,7 @@ fn push_varying(
     varying: Varying,
 ) {
     let lane = block.len;
-    for (component, v) in block.position.iter_mut().zip(position) {
-        component[lane] = v;
-    }
+    block.set_position(lane, position);
     // The usual case, a normal per vertex, tested at once.
     if varying == Varying::NORMAL {
         block.set_normal(lane, attribs.normal);

@@ -11,9 +11,11 @@ use crate::lighting::{FaceColors, LitVertex};
 /// Four components per lane.
 pub type Lanes4 = [LanesF32; 4];
 
-/// Sets lane `lane` of four-component lanes to `value`.
-pub(crate) fn lanes4_set(lanes: &mut Lanes4, lane: usize, value: Vec4) {
-    for (component, v) in lanes.iter_mut().zip(value.to_array()) {
+/// Sets lane `lane` of four-component lanes to `value` (a `Vec4`, or components apart, which
+/// are stored from the registers they are in).
+#[inline(always)]
+pub(crate) fn lanes4_set(lanes: &mut Lanes4, lane: usize, value: impl Into<[f32; 4]>) {
+    for (component, v) in lanes.iter_mut().zip(value.into()) {
         component[lane] = v;
     }
 }
@@ -183,7 +185,7 @@ impl InputBlock {
     /// block.set_position(3, Vec4::new(4.0, 5.0, 6.0, 1.0));
     /// assert_eq!(block.position[2][3], 6.0);
     /// ```
-    pub fn set_position(&mut self, lane: usize, position: Vec4) {
+    pub fn set_position(&mut self, lane: usize, position: impl Into<[f32; 4]>) {
         lanes4_set(&mut self.position, lane, position);
     }
 

@@ -116,7 +116,7 @@ impl DrawStream {
 }
 
 /// How many blocks `Context::stream_blocks` takes at a time: two, so that the fast engine's
-/// widest kernel (two blocks in sixteen lanes) serves immediate mode too.
+/// widest kernel (two blocks in sixteen lanes) serves the draws streamed through it.
 pub(crate) const STREAMED_BLOCKS: usize = 2;
 
 /// What feedback needs of a vertex after its colors were chosen.

@@ -122,8 +122,8 @@ impl LaidOutPoints<'_> {
     }
 
     /// Starts delivering the values whose place was given, in `pieces` pieces (finishing
-    /// what was being delivered before): their memory becomes the delivery's, the
-    /// delivery's theirs.
+    /// what was being delivered before, if anything): their memory becomes the delivery's,
+    /// the delivery's theirs.
     fn start_delivery(&mut self, pieces: usize) {
         self.delivering.copy(true);
         let Some(to) = self.destination.take() else {
@@ -227,6 +227,8 @@ impl PointsDraw<'_> {
     fn run_into(&self, chunk: usize, out: &mut LaidOutPoints) {
         self.sink.clear(out, CHUNK_BLOCKS);
         self.run(chunk, |block| self.sink.lay_out(block, out));
+        // The rest of the chunk before's values (a piece or so), fenced before `out` is
+        // handed on.
         out.delivering.copy(true);
     }
 
