@@ -53,6 +53,10 @@ pub struct PrimitiveInProgress {
     pub(crate) stream: DrawStream,
     /// Texture units 1 and up's coordinates of the pending vertices, while capture is on.
     pub(crate) units: Option<Box<crate::pipeline::units::PendingUnits>>,
+    /// The vertices processed or offered so far.
+    pub(crate) vertices: u64,
+    /// When the primitive began, if its way of lighting was chosen by trial (one light).
+    pub(crate) timing: Option<crate::commands::vertex::Timing>,
 }
 
 /// One GL context. Every GL command is a method; state changes that affect vertex processing

@@ -296,15 +296,23 @@ fn edge_flags_between_vertices_are_honored() {
 /// Many primitives of lengths about a batch's (1024 vertices) and its multiples, of three
 /// modes, glMaterial between vertices now and then (at a batch's end too): with 1, 2 and 3
 /// threads the feedback is the same to the bit, in the same order, run after run (the
-/// helper thread's timing, and so which thread lights what, differs from run to run).
+/// helper thread's timing, and so which thread lights what, differs from run to run). With
+/// one light as with three: a context's first primitives share their batches with the
+/// helper either way (`SharingChoice`).
 #[test]
 fn primitives_across_batches_feed_back_the_same_on_any_thread_count() {
+    for lights in [1, 3] {
+        primitives_across_batches_with_lights(lights);
+    }
+}
+
+fn primitives_across_batches_with_lights(lights: u32) {
     let lengths = [1, 1023, 1024, 1025, 2049, 3072, 4100];
     // Every kind of change but glMaterial, which `draw` adds at chosen vertices.
     let steps = steps(7, lengths.iter().sum(), ALL & !(1 << 6));
     let draw = |threads: i32| {
         fflight::threads::set_threads(threads).unwrap();
-        let values = feedback(&mut scene(3), GL_4D_COLOR_TEXTURE, |ctx| {
+        let values = feedback(&mut scene(lights), GL_4D_COLOR_TEXTURE, |ctx| {
             let mut steps = steps.iter();
             for (p, &length) in lengths.iter().enumerate() {
                 ctx.begin([GL_POINTS, GL_TRIANGLES, GL_LINE_STRIP][p % 3])
@@ -328,16 +336,23 @@ fn primitives_across_batches_feed_back_the_same_on_any_thread_count() {
     };
     let one = draw(1);
     for threads in [2, 3] {
-        assert_same_bits(&draw(threads), &one, &format!("{threads} threads"));
+        let what = format!("{lights} lights, {threads} threads");
+        assert_same_bits(&draw(threads), &one, &what);
     }
 }
 
 /// Points the helper thread lights it also lays out (feedback values, or the depths of
 /// selection hits): with a user clip plane culling about half of them, with a feedback
 /// buffer too small for them all, and in selection mode with a name per primitive, 1, 2 and
-/// 3 threads give the same values, counts and hit records.
+/// 3 threads give the same values, counts and hit records, with one light and with three.
 #[test]
 fn points_laid_out_by_the_helper_are_the_same_on_any_thread_count() {
+    for lights in [1, 3] {
+        points_laid_out_with_lights(lights);
+    }
+}
+
+fn points_laid_out_with_lights(lights: u32) {
     let lengths = [1024, 3000, 4097, 700];
     let draw = |ctx: &mut Context| {
         let mut rng = Lcg(99);
@@ -354,7 +369,7 @@ fn points_laid_out_by_the_helper_are_the_same_on_any_thread_count() {
     };
     let run = |threads: i32, mode: GLenum, size: i32| {
         fflight::threads::set_threads(threads).unwrap();
-        let mut ctx = scene(3);
+        let mut ctx = scene(lights);
         ctx.clip_plane(GL_CLIP_PLANE0, [1.0, 0.5, 0.0, 0.1])
             .unwrap();
         ctx.set_capability(GL_CLIP_PLANE0, true).unwrap();
@@ -383,7 +398,7 @@ fn points_laid_out_by_the_helper_are_the_same_on_any_thread_count() {
         assert!(one.0 != 0, "mode {mode:#x}, size {size}: something drawn");
         for threads in [2, 3] {
             let many = run(threads, mode, size);
-            let what = format!("mode {mode:#x}, size {size}, {threads} threads");
+            let what = format!("{lights} lights, mode {mode:#x}, size {size}, {threads} threads");
             assert_eq!(many.0, one.0, "{what}: count");
             assert_same_bits(&many.1, &one.1, &what);
             assert_eq!(many.2, one.2, "{what}: hit records");

@@ -16,6 +16,23 @@ use crate::pipeline::vertex::DerivedState;
 use crate::state::convert::Component;
 
 mod helper;
+mod sharing;
+
+pub(crate) use sharing::Timing;
+use sharing::{SharingChoice, Way};
+
+/// What lighting a vertex costs, against the application's thread writing blocks the helper
+/// thread has read (`Context::lighting_cost`).
+enum LightingCost {
+    /// Unlit, or no light: the helper is not offered the batches.
+    Low,
+    /// One light: on some machines the helper pays, on others not (`SharingChoice`).
+    Even,
+    /// Two lights or more: batches of 128 blocks, one call of the batch engine for 1024
+    /// vertices rather than `LONE_BATCH_BLOCKS`' 64 (against 16, immediate 8 spots on 1
+    /// thread: 64 -> 55 ns/vertex), offered to the helper.
+    High,
+}
 
 /// The current attributes set since glBegin. The pending blocks' lanes start with the current
 /// attributes of glBegin, and an attribute nothing set since keeps that value in every lane
@@ -323,14 +340,27 @@ impl Context {
         }
         let stream = self.begin_stream(mode);
         let units = self.pending_units();
-        let batch = if units.is_some() {
-            1
-        } else if self.vertices_observed() && self.lighting_worth_sharing() {
-            2 * HALF_BLOCKS
-        } else {
-            LONE_BATCH_BLOCKS
-        };
         let mut pending = self.spare_pending.take().unwrap_or_default();
+        let mut timing = None;
+        let way = if units.is_some() || !self.vertices_observed() {
+            Way::Alone
+        } else {
+            match self.lighting_cost() {
+                LightingCost::Low => Way::Alone,
+                LightingCost::Even if crate::threads::thread_count() > 1 => {
+                    let (way, began) = pending.sharing.begin();
+                    timing = Some(began);
+                    way
+                }
+                LightingCost::Even => Way::Alone,
+                LightingCost::High => Way::Shared,
+            }
+        };
+        let batch = match (way, &units) {
+            (_, Some(_)) => 1,
+            (Way::Shared, None) => 2 * HALF_BLOCKS,
+            (Way::Alone, None) => LONE_BATCH_BLOCKS,
+        };
         // The blocks hold another primitive's attributes; none set since glBegin yet.
         pending.fresh = 0;
         pending.primitive += 1;
@@ -341,20 +371,22 @@ impl Context {
             batch,
             stream,
             units,
+            vertices: 0,
+            timing,
         }));
         Ok(())
     }
 
-    /// Whether lighting a vertex costs enough (two lights or more) for batches of 128
-    /// blocks: one call of the batch engine for 1024 vertices rather than
-    /// `LONE_BATCH_BLOCKS`' 64 (against 16, immediate 8 spots on 1 thread: 64 -> 55
-    /// ns/vertex), and what the helper thread takes at a time.
-    /// (With one light the helper does not pay: the application's thread writing blocks the
-    /// helper has read costs more than the light, immediate 1 light 20.9 -> 23.3 ns/vertex
-    /// with the helper lighting and laying out every point.)
-    fn lighting_worth_sharing(&mut self) -> bool {
+    /// What lighting a vertex costs, against what sharing a batch with the helper thread
+    /// costs the application's thread.
+    fn lighting_cost(&mut self) -> LightingCost {
         let lighting = &self.derived().lighting;
-        lighting.enabled && lighting.lights().nth(1).is_some()
+        let mut lights = lighting.lights();
+        match (lighting.enabled, lights.next(), lights.next()) {
+            (true, Some(_), Some(_)) => LightingCost::High,
+            (true, Some(_), None) => LightingCost::Even,
+            _ => LightingCost::Low,
+        }
     }
 
     /// glEnd: the last vertices are processed and the draw ends.
@@ -374,8 +406,15 @@ impl Context {
         self.flush_vertices();
         let primitive = self.primitive.take().ok_or(GlError::InvalidOperation)?;
         let PrimitiveInProgress {
-            pending, stream, ..
+            mut pending,
+            stream,
+            vertices,
+            timing,
+            ..
         } = *primitive;
+        if let Some(began) = timing {
+            pending.sharing.end(began, vertices);
+        }
         self.spare_pending = Some(pending);
         self.end_stream(stream);
         Ok(())
@@ -447,6 +486,10 @@ impl Context {
         let partial = primitive.filling < primitive.batch
             && primitive.pending.block(primitive.filling).len > 0;
         let used = primitive.filling + usize::from(partial);
+        primitive.vertices += (primitive.filling * LANES) as u64;
+        if partial {
+            primitive.vertices += primitive.pending.block(primitive.filling).len as u64;
+        }
         if used > 0 {
             // Lit with the context's derived state borrowed, not shared: an `Arc` clone and
             // drop per batch are two atomic operations, which some hosts make slow.
@@ -494,6 +537,7 @@ impl Context {
                 &mut pending.spare,
             ) {
                 pending.in_flight.push_back(offer);
+                primitive.vertices += (primitive.batch * LANES) as u64;
                 // The blocks now pending are those of an earlier batch: of this primitive,
                 // every one has its attributes (a batch is offered full).
                 pending.fresh = if same_primitive { primitive.batch } else { 0 };
@@ -586,6 +630,8 @@ pub struct PendingBlocks {
     /// The number of the primitive in progress (counted by glBegin).
     primitive: u64,
     offers: helper::Offers,
+    /// Whether primitives with one light share their batches with the helper.
+    sharing: SharingChoice,
 }
 
 impl Default for PendingBlocks {
@@ -599,6 +645,7 @@ impl Default for PendingBlocks {
             fresh: 0,
             primitive: 0,
             offers: Default::default(),
+            sharing: Default::default(),
         }
     }
 }
@@ -617,6 +664,7 @@ impl Clone for PendingBlocks {
             fresh: self.fresh,
             primitive: self.primitive,
             offers: Default::default(),
+            sharing: self.sharing.clone(),
         }
     }
 }
