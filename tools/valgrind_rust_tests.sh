@@ -24,11 +24,14 @@
 #   mesh_draws  13 s of large indexed draws in a debug build: minutes under memcheck; the
 #               mesh path it covers has no unsafe code, and its draws enter through the same
 #               entry points as the C programs'.
-# And one test of a binary that runs:
+# And tests of a binary that runs:
 #   immediate_mode each_vertex_takes_the_attributes_current_at_its_glvertex
 #               3 s natively, over 150 s under memcheck (with capture's layouts, the two
 #               longest jobs): the order of attribute changes between vertices, through
 #               the same calls and helper thread as the binary's other tests, which run.
+#   immediate_mode *_with_one_light_*
+#               the thread-count tests again with one light (about 50 s under memcheck):
+#               the same calls, helper thread and layouts as their three-light forms.
 set -u
 cd "$(dirname "$0")/.."
 out=target/valgrind-rust
@@ -52,7 +55,7 @@ for line in sys.stdin:
 while read -r name exe; do
     case "$skip" in *" $name "*) continue ;; esac
     case "$name" in
-    immediate_mode) echo "$name $exe --skip each_vertex_takes_the_attributes_current_at_its_glvertex" ;;
+    immediate_mode) echo "$name $exe --skip each_vertex_takes_the_attributes_current_at_its_glvertex --skip _with_one_light_" ;;
     *) echo "$name $exe" ;;
     esac >> "$out/run.txt"
 done < "$out/binaries.txt"
