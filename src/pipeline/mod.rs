@@ -26,6 +26,7 @@ use crate::gl::*;
 use crate::lighting::FaceColors;
 use crate::lighting::batch::{Faces, Reads, process_blocks};
 use crate::lighting::lanes::lanes_of;
+use crate::state::raster::ViewportMap;
 use assembly::{Assembler, Primitive};
 use block::{InputBlock, OutputBlock};
 use clip::{ClipPlanes, PolygonVertex, clip_line, clip_triangle, point_visible};
@@ -90,6 +91,8 @@ pub struct DrawStream {
     assembler: Assembler,
     window: VertexWindow,
     planes: ClipPlanes,
+    /// The viewport transform, made once for the draw's blocks of points.
+    viewport: ViewportMap,
     capture: Option<capture::CapturedDraw>,
     /// Scratch for clipped polygons, kept across the draw's triangles.
     polygon: Vec<PolygonVertex>,
@@ -156,6 +159,7 @@ impl Context {
             assembler: Assembler::new(mode),
             window: VertexWindow::default(),
             planes: self.clip_planes(),
+            viewport: self.raster.viewport_map(),
             capture: self.capture.begin_draw(mode),
             polygon: Vec::new(),
         }
@@ -192,7 +196,7 @@ impl Context {
         if stream.assembler.mode() == GL_POINTS && stream.capture.is_none() {
             // Points need no assembly and no window of earlier vertices.
             if self.render_mode != RenderMode::Render {
-                self.feedback_points(&stream.planes, output);
+                self.feedback_points(&stream.viewport, &stream.planes, output);
             }
             return;
         }
@@ -203,8 +207,13 @@ impl Context {
 
     /// A block of points (front colors), each culled unless inside every plane: fed back or
     /// selected lane by lane, the same as `feedback_point` for each.
-    fn feedback_points(&mut self, planes: &ClipPlanes, block: &OutputBlock) {
-        let (visible, window) = points::visible_points(&self.raster.viewport_map(), planes, block);
+    fn feedback_points(
+        &mut self,
+        viewport: &ViewportMap,
+        planes: &ClipPlanes,
+        block: &OutputBlock,
+    ) {
+        let (visible, window) = points::visible_points(viewport, planes, block);
         if self.selecting() {
             for lane in lanes_of(visible) {
                 self.selection.hit(window[2][lane]);

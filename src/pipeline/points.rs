@@ -299,7 +299,9 @@ impl Context {
         let chunks = count.div_ceil(LANES * CHUNK_BLOCKS);
         if threads == 1 {
             for k in 0..chunks {
-                draw.run(k, |block| self.feedback_points(&draw.sink.planes, block));
+                draw.run(k, |block| {
+                    self.feedback_points(&draw.sink.viewport, &draw.sink.planes, block)
+                });
             }
             return true;
         }
@@ -320,7 +322,9 @@ impl Context {
             |k, out| draw.run_into(k, out),
             |step| match step {
                 // Every earlier chunk is appended: this one's points go straight in.
-                Step::Run(k) => draw.run(k, |block| self.feedback_points(&draw.sink.planes, block)),
+                Step::Run(k) => draw.run(k, |block| {
+                    self.feedback_points(&draw.sink.viewport, &draw.sink.planes, block)
+                }),
                 Step::Take(out) => self.append_points(out),
             },
         );
