@@ -341,25 +341,13 @@ impl Context {
         let stream = self.begin_stream(mode);
         let units = self.pending_units();
         let mut pending = self.spare_pending.take().unwrap_or_default();
-        let mut timing = None;
-        let way = if units.is_some() || !self.vertices_observed() {
-            Way::Alone
+        let (batch, timing) = if units.is_some() {
+            (1, None)
         } else {
-            match self.lighting_cost() {
-                LightingCost::Low => Way::Alone,
-                LightingCost::Even if crate::threads::thread_count() > 1 => {
-                    let (way, began) = pending.sharing.begin();
-                    timing = Some(began);
-                    way
-                }
-                LightingCost::Even => Way::Alone,
-                LightingCost::High => Way::Shared,
+            match self.way_to_light(&pending.sharing) {
+                (Way::Shared, timing) => (2 * HALF_BLOCKS, timing),
+                (Way::Alone, timing) => (LONE_BATCH_BLOCKS, timing),
             }
-        };
-        let batch = match (way, &units) {
-            (_, Some(_)) => 1,
-            (Way::Shared, None) => 2 * HALF_BLOCKS,
-            (Way::Alone, None) => LONE_BATCH_BLOCKS,
         };
         // The blocks hold another primitive's attributes; none set since glBegin yet.
         pending.fresh = 0;
@@ -375,6 +363,23 @@ impl Context {
             timing,
         }));
         Ok(())
+    }
+
+    /// How a primitive's batches are lit: shared with the helper thread where lighting costs
+    /// enough, alone where it costs little or nothing is observed, and by trial in between
+    /// (with the trial's timing of the primitive).
+    fn way_to_light(&mut self, sharing: &SharingChoice) -> (Way, Option<Timing>) {
+        if !self.vertices_observed() {
+            return (Way::Alone, None);
+        }
+        match self.lighting_cost() {
+            LightingCost::High => (Way::Shared, None),
+            LightingCost::Even if crate::threads::thread_count() > 1 => {
+                let (way, timing) = sharing.begin();
+                (way, Some(timing))
+            }
+            LightingCost::Even | LightingCost::Low => (Way::Alone, None),
+        }
     }
 
     /// What lighting a vertex costs, against what sharing a batch with the helper thread

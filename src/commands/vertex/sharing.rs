@@ -15,7 +15,7 @@
 use std::time::{Duration, Instant};
 
 /// Vertices of a primitive from which its batches can be shared (one batch's).
-pub(crate) const BIG_PRIMITIVE: u64 = 1024;
+const BIG_PRIMITIVE: u64 = 1024;
 
 /// Vertices of timed primitives a trial counts: about a millisecond's work.
 const TRIAL_VERTICES: u64 = 16 * 1024;
