@@ -21,19 +21,6 @@ mod sharing;
 pub(crate) use sharing::Timing;
 use sharing::{SharingChoice, Way};
 
-/// What lighting a vertex costs, against the application's thread writing blocks the helper
-/// thread has read (`Context::lighting_cost`).
-enum LightingCost {
-    /// Unlit, or no light: the helper is not offered the batches.
-    Low,
-    /// One light: on some machines the helper pays, on others not (`SharingChoice`).
-    Even,
-    /// Two lights or more: batches of 128 blocks, one call of the batch engine for 1024
-    /// vertices rather than `LONE_BATCH_BLOCKS`' 64 (against 16, immediate 8 spots on 1
-    /// thread: 64 -> 55 ns/vertex), offered to the helper.
-    High,
-}
-
 /// The current attributes set since glBegin. The pending blocks' lanes start with the current
 /// attributes of glBegin, and an attribute nothing set since keeps that value in every lane
 /// still, so glVertex writes only the position and the attributes named here.
@@ -365,32 +352,30 @@ impl Context {
         Ok(())
     }
 
-    /// How a primitive's batches are lit: shared with the helper thread where lighting costs
-    /// enough, alone where it costs little or nothing is observed, and by trial in between
-    /// (with the trial's timing of the primitive).
+    /// How a primitive's batches are lit, by what lighting a vertex costs against the
+    /// application's thread writing blocks the helper thread has read: alone when nothing is
+    /// observed, unlit or without lights; shared with two lights or more (batches of 128
+    /// blocks, one call of the batch engine for 1024 vertices rather than
+    /// `LONE_BATCH_BLOCKS`' 64: against 16, immediate 8 spots on 1 thread 64 -> 55
+    /// ns/vertex); with one light, where the helper pays on some machines and not on others,
+    /// by trial (`SharingChoice`, with the trial's timing of the primitive).
     fn way_to_light(&mut self, sharing: &SharingChoice) -> (Way, Option<Timing>) {
         if !self.vertices_observed() {
             return (Way::Alone, None);
         }
-        match self.lighting_cost() {
-            LightingCost::High => (Way::Shared, None),
-            LightingCost::Even if crate::threads::thread_count() > 1 => {
+        let lighting = &self.derived().lighting;
+        let lights = if lighting.enabled {
+            lighting.lights().take(2).count()
+        } else {
+            0
+        };
+        match lights {
+            2 => (Way::Shared, None),
+            1 if crate::threads::thread_count() > 1 => {
                 let (way, timing) = sharing.begin();
                 (way, Some(timing))
             }
-            LightingCost::Even | LightingCost::Low => (Way::Alone, None),
-        }
-    }
-
-    /// What lighting a vertex costs, against what sharing a batch with the helper thread
-    /// costs the application's thread.
-    fn lighting_cost(&mut self) -> LightingCost {
-        let lighting = &self.derived().lighting;
-        let mut lights = lighting.lights();
-        match (lighting.enabled, lights.next(), lights.next()) {
-            (true, Some(_), Some(_)) => LightingCost::High,
-            (true, Some(_), None) => LightingCost::Even,
-            _ => LightingCost::Low,
+            _ => (Way::Alone, None),
         }
     }
 

@@ -188,7 +188,7 @@ impl Context {
         if stream.assembler.mode() != GL_POINTS || stream.capture.is_some() {
             return None;
         }
-        self.points_sink(stream.planes.clone())
+        self.points_sink(stream.viewport, stream.planes.clone())
     }
 
     /// Streams a processed block's vertices into the draw, in order.

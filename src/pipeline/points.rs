@@ -334,16 +334,20 @@ impl Context {
         true
     }
 
-    /// Where points drawn with `planes` go, for threads without the context; `None` in
-    /// render mode, and in feedback mode without a buffer.
-    pub(crate) fn points_sink(&self, planes: ClipPlanes) -> Option<PointsSink> {
+    /// Where points drawn with `viewport` and `planes` go, for threads without the context;
+    /// `None` in render mode, and in feedback mode without a buffer.
+    pub(crate) fn points_sink(
+        &self,
+        viewport: ViewportMap,
+        planes: ClipPlanes,
+    ) -> Option<PointsSink> {
         let layout = match self.render_mode {
             RenderMode::Render => return None,
             RenderMode::Select => None,
             RenderMode::Feedback => Some(self.feedback.layout?),
         };
         Some(PointsSink {
-            viewport: self.raster.viewport_map(),
+            viewport,
             planes,
             layout,
         })
