@@ -10,7 +10,7 @@ CFLAGS_STRICT := -std=c99 -Wall -Wextra -Werror -pedantic
 LIB := target/debug/libfflight.a
 DEMO_DIR := target/demo
 
-.PHONY: all deps build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind \
+.PHONY: all deps build test-build header test lint demo bench clean install uninstall test-install test-sanitize test-valgrind \
 	test-window prefixed test-cinstall test-sweep-sanitize test-valgrind-rust fuzz fuzz-osmesa
 
 all: build
@@ -26,6 +26,13 @@ deps:
 build: deps
 	$(CARGO) build
 
+# The debug library as `cargo test` builds it, with the tests: a plain `cargo build` resolves
+# the dependencies' features without the dev-dependencies, and every switch between the two
+# compiles the library again (25-40 s, three times in a make test).
+DEBUG_BUILD := $(CARGO) build --lib --tests
+test-build: deps
+	$(DEBUG_BUILD)
+
 # Regenerates include/fflight.h, include/fflight_prefixed.h and src/capi/generated.rs from the
 # sources (tests/header.rs fails when one is stale).
 header:
@@ -35,7 +42,7 @@ lint:
 	$(CARGO) fmt --check
 	$(CARGO) clippy --all-targets -- -D warnings
 
-test: build
+test: test-build
 	$(CARGO) test
 	$(MAKE) --no-print-directory test-window
 	$(MAKE) lint
@@ -90,7 +97,7 @@ clean:
 # by include/fflight_prefixed.h (tests/prefixed.rs checks both and links one with OSMesa).
 PREFIXED_LIB := target/prefixed/libfflight_prefixed.a
 prefixed:
-	$(CARGO) build $(if $(filter release,$(PROFILE)),--release,)
+	$(if $(filter release,$(PROFILE)),$(CARGO) build --release,$(DEBUG_BUILD))
 	@mkdir -p target/prefixed
 	tools/prefix_library.sh target/$(PROFILE)/libfflight.a $(PREFIXED_LIB)
 
@@ -183,7 +190,7 @@ SANITIZE_FLAGS := -std=c99 -g -O0 -fsanitize=address,undefined -fno-sanitize-rec
 SANITIZE_PROGRAMS := $(patsubst c_tests/%.c,$(SANITIZE_DIR)/%.ok,$(wildcard c_tests/*.c))
 # Under its SONAME, which the programs name and find by their run path.
 SANITIZE_SO := $(SANITIZE_DIR)/lib/libfflight.so.0
-test-sanitize: build
+test-sanitize: test-build
 	@$(MAKE) --no-print-directory -j2 $(SANITIZE_PROGRAMS)
 	@echo "test-sanitize: $(words $(SANITIZE_PROGRAMS)) programs under ASan and UBSan, no report"
 
@@ -206,10 +213,15 @@ $(SANITIZE_DIR)/%.ok: c_tests/%.c c_tests/ffl_test.h $(SANITIZE_SO)
 # Every fflight build of c_tests (made by `cargo test`: run that first) under memcheck, two at
 # a time: any memory error or definite leak (threads that exit without destroying their
 # default context included: thread_exit_context.c) fails. Exit statuses of the programs
-# themselves are checked by `cargo test`.
+# themselves are checked by `cargo test`. The longest first (thread_stress takes over 2
+# minutes under memcheck, random_lighting and random_meshes about 30 s; the others 2-6 s),
+# so that none is left running alone at the end.
+LONG_UNDER_MEMCHECK := thread_stress random_lighting random_meshes
 test-valgrind:
 	@ls target/c_tests/*.fflight > /dev/null
-	@ls target/c_tests/*.fflight | xargs -P2 -I{} sh -c \
+	@{ for p in $(LONG_UNDER_MEMCHECK); do echo target/c_tests/$$p.fflight; done; \
+		ls target/c_tests/*.fflight | grep -v $(foreach p,$(LONG_UNDER_MEMCHECK),-e /$(p).fflight); } | \
+		xargs -P2 -I{} sh -c \
 		'valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite {} \
 		> /dev/null 2> {}.valgrind; if [ $$? = 99 ]; then echo "valgrind: {}"; cat {}.valgrind; exit 255; fi'
 	@echo "test-valgrind: $$(ls target/c_tests/*.fflight | wc -l) programs under memcheck, no error, no definite leak"
@@ -231,7 +243,7 @@ test-window: deps
 # ---- the entry-point sweep under ASan and UBSan (tests/sweep.rs, run by `cargo test`, writes
 # its generated header target/sweep/sweep_functions.h and runs the plain build) ----
 SWEEP_DIR := target/sweep
-test-sweep-sanitize: build
+test-sweep-sanitize: test-build
 	@ls $(SWEEP_DIR)/sweep_functions.h > /dev/null
 	@$(CC) $(SANITIZE_FLAGS) -D_DEFAULT_SOURCE -Iinclude -I$(SWEEP_DIR) tests/sweep/sweep.c $(LIB) \
 		-lm -lpthread -ldl -o $(SWEEP_DIR)/sweep_asan

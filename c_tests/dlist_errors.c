@@ -107,7 +107,13 @@ int main(void)
     glDeleteLists(0, 3);
     ffl_print_error("delete_from_0");
     printf("is_list_1_after_delete %d\n", (int)glIsList(1));
+    /* OSMesa visits every name of the range: 38 s for this one, so it gets a range that
+     * ends at 2^26 (the same lists deleted), fflight the hostile one. */
+#ifdef FFL_OSMESA
+    glDeleteLists(first, (1 << 26) - (GLsizei)first);
+#else
     glDeleteLists(first, 2000000000);
+#endif
     ffl_print_error("delete_huge_range");
     printf("is_list_after_delete %d %d\n", (int)glIsList(first), (int)glIsList(first + 2));
     printf("is_list_0 %d\n", (int)glIsList(0));
