@@ -46,9 +46,8 @@ fn splat4(value: Vec4) -> Lanes4 {
 
 /// Up to `LANES` vertices as glVertex would see them: position and current attributes.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C, align(64))]
 pub struct InputBlock {
-    /// How many lanes hold vertices; the others hold copies that are processed and ignored.
-    pub len: usize,
     /// Object coordinates (x, y, z, w).
     pub position: Lanes4,
     /// The current normal (x, y, z), in object coordinates.
@@ -61,6 +60,8 @@ pub struct InputBlock {
     pub tex_coord: Lanes4,
     /// The current edge flag.
     pub edge_flag: [bool; LANES],
+    /// How many lanes hold vertices; the others hold copies that are processed and ignored.
+    pub len: usize,
 }
 
 impl Default for InputBlock {
@@ -226,9 +227,8 @@ impl InputBlock {
 
 /// The processed vertices of an `InputBlock`.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C, align(64))]
 pub struct OutputBlock {
-    /// How many lanes hold vertices: the input block's `len`.
-    pub len: usize,
     /// Eye coordinates.
     pub eye: Lanes4,
     /// Clip coordinates.
@@ -245,6 +245,8 @@ pub struct OutputBlock {
     pub tex_coord: Lanes4,
     /// The edge flags, passed through.
     pub edge_flag: [bool; LANES],
+    /// How many lanes hold vertices: the input block's `len`.
+    pub len: usize,
 }
 
 impl Default for OutputBlock {

@@ -213,7 +213,8 @@ impl Context {
         planes: &ClipPlanes,
         block: &OutputBlock,
     ) {
-        let (visible, window) = points::visible_points(viewport, planes, block);
+        let points::VisiblePoints { visible, window } =
+            points::visible_points(viewport, planes, block);
         if self.selecting() {
             for lane in lanes_of(visible) {
                 self.selection.hit(window[2][lane]);

@@ -43,16 +43,24 @@ pub(crate) fn visible_points(
     viewport: &ViewportMap,
     planes: &ClipPlanes,
     block: &OutputBlock,
-) -> (u8, super::block::Lanes4) {
+) -> VisiblePoints {
     let masks = planes.block_masks(block);
     let mut visible = 0;
     for (lane, mask) in masks.into_iter().enumerate() {
         visible |= u8::from(mask == 0) << lane;
     }
-    (
-        visible & filled_lanes(block.len),
-        viewport.window_lanes(&block.clip),
-    )
+    VisiblePoints {
+        window: viewport.window_lanes(&block.clip),
+        visible: visible & filled_lanes(block.len),
+    }
+}
+
+/// `visible_points`' result: window coordinates (x, y, z and the clip w) and the drawn
+/// points' bits, aligned as the blocks are, so that no component straddles a cache line.
+#[repr(C, align(64))]
+pub(crate) struct VisiblePoints {
+    pub window: super::block::Lanes4,
+    pub visible: u8,
 }
 
 /// Blocks `inputs` filled with the elements from `start` on (at most `count` of them),
@@ -172,7 +180,7 @@ impl PointsSink {
     /// same order, as `Context::feedback_points`.
     pub(crate) fn lay_out(&self, block: &OutputBlock, out: &mut LaidOutPoints) {
         out.delivering.copy(false);
-        let (visible, window) = visible_points(&self.viewport, &self.planes, block);
+        let VisiblePoints { visible, window } = visible_points(&self.viewport, &self.planes, block);
         match &self.layout {
             Some(layout) => {
                 let arrays = [&window, &block.front_primary, &block.tex_coord];
