@@ -247,6 +247,9 @@ trait TriangleSink {
 }
 
 impl TriangleSink for Context {
+    // Compiled into the loop over the window's triangles (`send_triangles`): called, its
+    // arguments and the closure's captures went through memory.
+    #[inline(always)]
     fn triangle(&mut self, len: usize, write: impl FnOnce(&mut [f32])) {
         self.feedback.append_with(len, write);
     }
@@ -280,6 +283,7 @@ struct ChunkOutput {
 }
 
 impl TriangleSink for ChunkOutput {
+    #[inline(always)]
     fn triangle(&mut self, len: usize, write: impl FnOnce(&mut [f32])) {
         let at = self.values.len();
         self.values.resize(at + len, 0.0);
@@ -377,9 +381,12 @@ impl MeshCache {
         'retry: loop {
             let mut slots = [0; 3];
             let mut spare = false;
+            // A fixed size, so that no slot below needs a bounds check.
+            let tags: &mut [Tag; SLOTS + SPARE_SLOTS] =
+                (&mut self.tags[..]).try_into().expect("the cache's slots");
             for (k, &index) in corners.iter().enumerate() {
                 let mut slot = index % SLOTS;
-                let tag = &mut self.tags[slot];
+                let tag = &mut tags[slot];
                 if tag.index != index {
                     if tag.window == self.window {
                         if !self.triangles.is_empty() {
@@ -388,7 +395,7 @@ impl MeshCache {
                         }
                         // Two corners of this triangle share a slot: a spare one, used once.
                         slot = SLOTS + k;
-                        self.tags[slot].index = index;
+                        tags[slot].index = index;
                         spare = true;
                     } else {
                         tag.index = index;
@@ -396,7 +403,7 @@ impl MeshCache {
                     self.miss_indices.push(index);
                     self.miss_slots.push(slot as u32);
                 }
-                self.tags[slot].window = self.window;
+                tags[slot].window = self.window;
                 slots[k] = slot as u32;
             }
             self.triangles.push(slots);
@@ -480,15 +487,18 @@ impl MeshCache {
                 continue;
             }
             let face = if front { 0 } else { N };
+            // Each corner's values of the face, N of them: the copies below need no check.
+            let corners = [va, vb, vc].map(|v| &v[face..face + N]);
             sink.triangle(2 + 3 * N, |out| {
-                out[0] = GL_POLYGON_TOKEN as f32;
-                out[1] = 3.0;
-                for (k, v) in [va, vb, vc].into_iter().enumerate() {
-                    out[2 + k * N..][..N].copy_from_slice(&v[face..][..N]);
+                let (head, rooms) = out.split_at_mut(2);
+                head.copy_from_slice(&[GL_POLYGON_TOKEN as f32, 3.0]);
+                for (room, corner) in rooms.chunks_exact_mut(N).zip(corners) {
+                    room.copy_from_slice(corner);
                 }
                 if let Some(color) = draw.flat_color {
-                    for k in 0..2 {
-                        out[2 + k * N + color..][..4].copy_from_slice(&vc[face + color..][..4]);
+                    let provoking = &corners[2][color..color + 4];
+                    for room in rooms.chunks_exact_mut(N).take(2) {
+                        room[color..color + 4].copy_from_slice(provoking);
                     }
                 }
             });
