@@ -449,9 +449,14 @@ impl MeshCache {
     /// The window's triangles: trivially rejected, clipped by the general path, or faced,
     /// culled and fed back or selected here.
     fn send_triangles<const N: usize>(&mut self, sink: &mut impl TriangleSink, draw: &MeshDraw) {
+        // Fixed sizes, and slots bounded by them (every slot is one of them: `min` changes
+        // none), so that a slot's mask and values need no bounds check of their own
+        // (MeshCache::draw on a 500x500 mesh: 480 -> 457 M instructions).
+        let Slots { masks, values } = &self.slots;
+        let masks: &[u32; SLOTS + SPARE_SLOTS] = masks[..].try_into().expect("the cache's slots");
+        let values = &values[..(SLOTS + SPARE_SLOTS) * 2 * N];
         for &triangle in &self.triangles {
-            let [a, b, c] = triangle.map(|slot| slot as usize);
-            let Slots { masks, values } = &self.slots;
+            let [a, b, c] = triangle.map(|slot| (slot as usize).min(SLOTS + SPARE_SLOTS - 1));
             let masks = [masks[a], masks[b], masks[c]];
             if masks[0] | masks[1] | masks[2] != 0 {
                 if masks[0] & masks[1] & masks[2] == 0 {
