@@ -45,6 +45,8 @@ fn splat4(value: Vec4) -> Lanes4 {
 }
 
 /// Up to `LANES` vertices as glVertex would see them: position and current attributes.
+// A cache line's alignment and the lane arrays first (each 32 bytes, at a multiple of 32), so
+// that no load or store of a component straddles two lines; `OutputBlock` likewise.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[repr(C, align(64))]
 pub struct InputBlock {
