@@ -15,9 +15,9 @@ const STREAMING_MIN: usize = 1024;
 /// Hygon's), whose streaming stores write at the memory's speed (an EPYC, arrays 1 light on 2
 /// threads: 6.9 -> 6.2 ns/vertex with them); not elsewhere, as measured on Intel's server
 /// cores, where one core's streaming stores are slower than plain stores with their reads (a
-/// Cascade Lake Xeon: 6.5 against 8.7 GB/s
-/// written; arrays 1 light on 2 threads 0.94 times the time with plain stores, 10 of 10
-/// alternating pairs faster; immediate mode with one light 6 of 6, median 0.92).
+/// Cascade Lake Xeon: 6.5 against 8.7 GB/s written; arrays 1 light on 2 threads 0.94 times
+/// the time with plain stores, 10 of 10 alternating pairs faster; immediate mode with one
+/// light 6 of 6, median 0.92).
 fn streaming_pays() -> bool {
     static PAYS: OnceLock<bool> = OnceLock::new();
     *PAYS.get_or_init(|| {
