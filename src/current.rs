@@ -176,6 +176,23 @@ pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
         .flatten()
 }
 
+/// `with_current` for a command's usual case: `None`, with nothing done, when the context is
+/// not in this thread's slot (none current yet, or a call has it out), where `with_current`
+/// would make the default context current. No call but `f`'s.
+#[inline(always)]
+pub fn with_current_in_slot<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
+    CURRENT
+        .try_with(|slot| {
+            let mut borrowed = Borrowed {
+                slot,
+                context: Some(slot.context.take()?),
+            };
+            borrowed.context.as_deref_mut().map(f)
+        })
+        .ok()
+        .flatten()
+}
+
 /// Makes `handle` current on this thread (`None` releases the current one). A context that is
 /// current on another thread is GL_INVALID_OPERATION, and nothing changes; so is a call made
 /// while a GL call of this thread is running.

@@ -4,7 +4,7 @@
 
 use glam::{Vec3, Vec4};
 
-use super::{read, with_context, with_context_inline};
+use super::{read, with_context, with_context_inline, with_context_quick};
 use crate::commands::list::Command;
 use crate::error::GlError;
 use crate::gl::*;
@@ -47,11 +47,33 @@ fn compile(ctx: &mut crate::context::Context, command: Command) -> crate::error:
 
 attribute!(color, Color, color_rgba, Vec4, [r, g, b, a]);
 attribute!(tex_coord, TexCoord, tex_coord_strq, Vec4, [s, t, r, q]);
-attribute!(vertex, Vertex, vertex_xyzw, Vec4, [x, y, z, w]);
+attribute!(any_vertex, Vertex, vertex_xyzw, Vec4, [x, y, z, w]);
+
+/// glVertex and glNormal: their usual case compiled into the entry point with no call (a
+/// leaf, which needs no stack frame), every other case in a function of its own, called
+/// only when the usual case did nothing.
+#[inline(always)]
+fn vertex([x, y, z, w]: [f32; 4]) {
+    if !with_context_quick(|ctx| ctx.try_vertex_quick(x, y, z, w)) {
+        any_vertex_call(x, y, z, w);
+    }
+}
+
+#[inline(never)]
+fn any_vertex_call(x: f32, y: f32, z: f32, w: f32) {
+    any_vertex([x, y, z, w]);
+}
 
 #[inline(always)]
 fn normal([x, y, z]: [f32; 3]) {
-    with_context_inline(move |ctx| {
+    if !with_context_quick(|ctx| ctx.try_normal_quick(x, y, z)) {
+        any_normal(x, y, z);
+    }
+}
+
+#[inline(never)]
+fn any_normal(x: f32, y: f32, z: f32) {
+    with_context(move |ctx| {
         if ctx.compiling_list() {
             compile(ctx, Command::Normal(Vec3::new(x, y, z)))
         } else {

@@ -62,6 +62,17 @@ pub(crate) fn with_context_inline<R: Default>(
     .unwrap_or_default()
 }
 
+/// The guard of a command's usual case, which cannot panic (no indexing, no call): runs
+/// `command` on the current context and returns whether it did the command; `false` (the
+/// command not done) when no context is in this thread's slot, for the caller to run the
+/// command through `with_context`. Without `catch_unwind`, whose closure the compiler then
+/// keeps out of line, the usual case of glVertex is a leaf with no stack frame; were a panic
+/// to happen here anyway, the `extern "C"` boundary aborts rather than unwind into C.
+#[inline(always)]
+pub(crate) fn with_context_quick(command: impl FnOnce(&mut Context) -> bool) -> bool {
+    current::with_current_in_slot(command).unwrap_or(false)
+}
+
 /// Whether `count` values are more than any memory holds (isize::MAX bytes): a size made of
 /// hostile arguments, which no pointer can honor; it reads nothing, like NULL.
 fn beyond_memory<T>(count: usize) -> bool {

@@ -145,6 +145,61 @@ impl Context {
         self.vertex_components([x, y, z, w]);
     }
 
+    /// glNormal's usual case, compiled into the C entry points: outside display list
+    /// compilation, the normal stored. `false`, with nothing done, in a list.
+    #[inline(always)]
+    pub(crate) fn try_normal_quick(&mut self, x: f32, y: f32, z: f32) -> bool {
+        if self.compiling_list() {
+            return false;
+        }
+        self.normal_xyz(x, y, z);
+        true
+    }
+
+    /// glVertex's usual case, compiled into the C entry points with no call, so that they
+    /// need no stack frame: outside display list compilation, a vertex not observed (in
+    /// GL_RENDER mode), or one that goes into a fresh block without completing its batch,
+    /// with at most the normal set since glBegin. `false`, with nothing done, for every
+    /// other case, which `vertex_xyzw` takes.
+    #[inline(never)]
+    pub(crate) fn try_vertex_quick(&mut self, x: f32, y: f32, z: f32, w: f32) -> bool {
+        if self.compiling_list() {
+            return false;
+        }
+        if !self.vertices_observed() {
+            return true;
+        }
+        let varying = self.varying;
+        let Some(primitive) = &mut self.primitive else {
+            return false;
+        };
+        let index = primitive.filling;
+        let last_block = index + 1 == primitive.batch;
+        if index >= primitive.pending.fresh
+            || primitive.units.is_some()
+            || !(varying == Varying::NORMAL || varying == Varying::empty())
+        {
+            return false;
+        }
+        // Checked here, not by indexing: the path has no panic, which would need a frame.
+        let Some(block) = primitive.pending.get_block(index) else {
+            return false;
+        };
+        let lane = block.len;
+        if lane >= LANES || (lane + 1 == LANES && last_block) {
+            return false;
+        }
+        block.set_position(lane, [x, y, z, w]);
+        if varying == Varying::NORMAL {
+            block.set_normal(lane, self.current.normal);
+        }
+        block.len = lane + 1;
+        if block.is_full() {
+            primitive.filling += 1;
+        }
+        true
+    }
+
     /// glSecondaryColor3 (§2.7): the alpha of the current secondary color stays 1.
     ///
     /// # Examples
@@ -700,5 +755,12 @@ impl PendingBlocks {
     #[inline(always)]
     fn block(&mut self, index: usize) -> &mut InputBlock {
         &mut self.halves[index / HALF_BLOCKS][index % HALF_BLOCKS]
+    }
+
+    #[inline(always)]
+    fn get_block(&mut self, index: usize) -> Option<&mut InputBlock> {
+        self.halves
+            .get_mut(index / HALF_BLOCKS)?
+            .get_mut(index % HALF_BLOCKS)
     }
 }
