@@ -5,6 +5,7 @@
 //! thread cannot be made current on another.
 
 use std::cell::{Cell, RefCell};
+use std::mem::ManuallyDrop;
 use std::sync::{Arc, Mutex};
 
 use crate::context::Context;
@@ -66,45 +67,61 @@ impl FflContext {
     }
 }
 
-/// This thread's current context: its handle, and the context itself while no GL call of
-/// this thread has it out (a call takes it for its duration, so a re-entrant call finds the
-/// slot empty with a handle set, and is refused).
+/// The context current on this thread, while no GL call of this thread has it out (a call
+/// takes it for its duration, so a re-entrant call finds the cell empty with a handle set,
+/// and is refused). A cell with no destructor, so that a call reaches it at one thread-local
+/// address, with no check that it is initialized or registration of a destructor (the
+/// attribute commands' usual case then needs no stack frame); `Slot`, whose destructor is
+/// registered when a context is first made current here, gives it back at the thread's end.
+type ContextCell = Cell<ManuallyDrop<Option<Box<Context>>>>;
+
+/// Takes the context out of its cell.
+#[inline(always)]
+fn take(cell: &ContextCell) -> Option<Box<Context>> {
+    ManuallyDrop::into_inner(cell.take())
+}
+
+/// Puts `context` in its cell, which is empty (holds nothing to drop).
+#[inline(always)]
+fn put(cell: &ContextCell, context: Option<Box<Context>>) {
+    let empty = cell.replace(ManuallyDrop::new(context));
+    debug_assert!(empty.is_none());
+}
+
+/// This thread's current context's handle.
 struct Slot {
     handle: RefCell<Option<Arc<FflContext>>>,
-    context: Cell<Option<Box<Context>>>,
 }
 
 impl Drop for Slot {
     fn drop(&mut self) {
-        // The thread ends: its current context goes back to its handle.
-        if let (Some(handle), Some(context)) = (self.handle.get_mut().take(), self.context.take()) {
+        // The thread ends: its current context goes back to its handle. (The cell, which
+        // has no destructor, is still there.)
+        let context = CONTEXT.try_with(take).ok().flatten();
+        if let (Some(handle), Some(context)) = (self.handle.get_mut().take(), context) {
             handle.put_back(context);
         }
     }
 }
 
-/// Gives the context back to its slot when the call ends, also when it unwinds.
+/// Gives the context back to its cell when the call ends, also when it unwinds.
 struct Borrowed<'a> {
-    slot: &'a Slot,
+    cell: &'a ContextCell,
     context: Option<Box<Context>>,
 }
 
 impl Drop for Borrowed<'_> {
     #[inline(always)]
     fn drop(&mut self) {
-        // The slot is empty while the context is out: nothing to drop (`set` would call
-        // the context's destructor on the None it replaces).
-        let empty = self.slot.context.replace(self.context.take());
-        debug_assert!(empty.is_none());
-        std::mem::forget(empty);
+        put(self.cell, self.context.take());
     }
 }
 
 thread_local! {
+    static CONTEXT: ContextCell = const { Cell::new(ManuallyDrop::new(None)) };
     static CURRENT: Slot = const {
         Slot {
             handle: RefCell::new(None),
-            context: Cell::new(None),
         }
     };
     /// The context a thread falls back to when none is current: made on its first GL call,
@@ -122,30 +139,34 @@ fn default_handle() -> Option<Arc<FflContext>> {
         .ok()
 }
 
-impl Slot {
-    /// The thread's default context made current, when no context is (the first GL call);
-    /// `None` when one is current but a call has it out (a re-entrant call).
-    #[cold]
-    #[inline(never)]
-    fn current_default(&self) -> Option<Box<Context>> {
-        let mut handle = self.handle.try_borrow_mut().ok()?;
-        if handle.is_some() {
-            return None;
-        }
-        let default = default_handle()?;
-        // The default is current on another thread (its pointer was handed there): it is
-        // not current here too, until that thread releases it.
-        let context = default.take()?;
-        *handle = Some(default);
-        Some(context)
-    }
+/// The thread's default context made current, when no context is (the first GL call);
+/// `None` when one is current but a call has it out (a re-entrant call), or the thread is
+/// ending.
+#[cold]
+#[inline(never)]
+fn current_default() -> Option<Box<Context>> {
+    CURRENT
+        .try_with(|slot| {
+            let mut handle = slot.handle.try_borrow_mut().ok()?;
+            if handle.is_some() {
+                return None;
+            }
+            let default = default_handle()?;
+            // The default is current on another thread (its pointer was handed there): it is
+            // not current here too, until that thread releases it.
+            let context = default.take()?;
+            *handle = Some(default);
+            Some(context)
+        })
+        .ok()
+        .flatten()
 }
 
 /// Runs `f` on this thread's current context; with none current, on the thread's default one.
 /// `None` when the thread is exiting or the call is re-entrant (a GL call from a callback).
 ///
 /// This runs around every GL call: a thread-local access, and the context moved out of its
-/// slot and back (two pointer stores), nothing more while a context is current.
+/// cell and back (two pointer stores), nothing more while a context is current.
 ///
 /// # Examples
 ///
@@ -160,37 +181,31 @@ impl Slot {
 /// ```
 #[inline(always)]
 pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
-    CURRENT
-        .try_with(|slot| {
-            let context = match slot.context.take() {
-                Some(context) => context,
-                None => slot.current_default()?,
-            };
-            let mut borrowed = Borrowed {
-                slot,
-                context: Some(context),
-            };
-            borrowed.context.as_deref_mut().map(f)
-        })
-        .ok()
-        .flatten()
+    CONTEXT.with(|cell| {
+        let context = match take(cell) {
+            Some(context) => context,
+            None => current_default()?,
+        };
+        let mut borrowed = Borrowed {
+            cell,
+            context: Some(context),
+        };
+        borrowed.context.as_deref_mut().map(f)
+    })
 }
 
 /// `with_current` for a command's usual case: `None`, with nothing done, when the context is
-/// not in this thread's slot (none current yet, or a call has it out), where `with_current`
+/// not in this thread's cell (none current yet, or a call has it out), where `with_current`
 /// would make the default context current. No call but `f`'s.
 #[inline(always)]
 pub fn with_current_in_slot<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
-    CURRENT
-        .try_with(|slot| {
-            let mut borrowed = Borrowed {
-                slot,
-                context: Some(slot.context.take()?),
-            };
-            borrowed.context.as_deref_mut().map(f)
-        })
-        .ok()
-        .flatten()
+    CONTEXT.with(|cell| {
+        let mut borrowed = Borrowed {
+            cell,
+            context: Some(take(cell)?),
+        };
+        borrowed.context.as_deref_mut().map(f)
+    })
 }
 
 /// Makes `handle` current on this thread (`None` releases the current one). A context that is
@@ -210,40 +225,45 @@ pub fn with_current_in_slot<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
 /// # Ok::<(), fflight::GlError>(())
 /// ```
 pub fn make_current(handle: Option<Arc<FflContext>>) -> GlResult {
+    let cell = |slot: &Slot| {
+        CONTEXT
+            .try_with(|cell| {
+                let mut current = slot
+                    .handle
+                    .try_borrow_mut()
+                    .map_err(|_| GlError::InvalidOperation)?;
+                let context = take(cell);
+                if current.is_some() && context.is_none() {
+                    return Err(GlError::InvalidOperation); // a GL call has it out
+                }
+                if let (Some(current), Some(handle)) = (current.as_ref(), handle.as_ref())
+                    && Arc::ptr_eq(current, handle)
+                {
+                    put(cell, context);
+                    return Ok(());
+                }
+                let next = match &handle {
+                    Some(handle) => match handle.take() {
+                        Some(next) => Some(next),
+                        None => {
+                            put(cell, context);
+                            return Err(GlError::InvalidOperation);
+                        }
+                    },
+                    None => None,
+                };
+                // The previous context goes back to its handle.
+                if let (Some(previous), Some(context)) = (current.take(), context) {
+                    previous.put_back(context);
+                }
+                *current = handle;
+                put(cell, next);
+                Ok(())
+            })
+            .unwrap_or(Err(GlError::InvalidOperation))
+    };
     CURRENT
-        .try_with(|slot| {
-            let mut current = slot
-                .handle
-                .try_borrow_mut()
-                .map_err(|_| GlError::InvalidOperation)?;
-            let context = slot.context.take();
-            if current.is_some() && context.is_none() {
-                return Err(GlError::InvalidOperation); // a GL call has it out
-            }
-            if let (Some(current), Some(handle)) = (current.as_ref(), handle.as_ref())
-                && Arc::ptr_eq(current, handle)
-            {
-                slot.context.set(context);
-                return Ok(());
-            }
-            let next = match &handle {
-                Some(handle) => match handle.take() {
-                    Some(next) => Some(next),
-                    None => {
-                        slot.context.set(context);
-                        return Err(GlError::InvalidOperation);
-                    }
-                },
-                None => None,
-            };
-            // The previous context goes back to its handle.
-            if let (Some(previous), Some(context)) = (current.take(), context) {
-                previous.put_back(context);
-            }
-            *current = handle;
-            slot.context.set(next);
-            Ok(())
-        })
+        .try_with(cell)
         .unwrap_or(Err(GlError::InvalidOperation))
 }
 
@@ -309,6 +329,22 @@ mod tests {
             .join()
             .unwrap();
         assert_eq!(result, Ok(()));
+    }
+
+    #[test]
+    fn a_context_current_on_a_thread_that_ends_returns_to_its_handle() {
+        let handle = FflContext::new();
+        let other = handle.clone();
+        std::thread::spawn(move || {
+            make_current(Some(other)).unwrap();
+            with_current(|ctx| ctx.normal(glam::Vec3::X)).unwrap();
+        })
+        .join()
+        .unwrap();
+        assert!(!current_elsewhere(&handle));
+        make_current(Some(handle)).unwrap();
+        assert_eq!(with_current(|ctx| ctx.current.normal), Some(glam::Vec3::X));
+        make_current(None).unwrap();
     }
 
     #[test]
