@@ -105,15 +105,15 @@ impl Drop for Slot {
 }
 
 /// Gives the context back to its cell when the call ends, also when it unwinds.
-struct Borrowed<'a> {
-    cell: &'a ContextCell,
+struct Borrowed {
     context: Option<Box<Context>>,
 }
 
-impl Drop for Borrowed<'_> {
+impl Drop for Borrowed {
     #[inline(always)]
     fn drop(&mut self) {
-        put(self.cell, self.context.take());
+        let context = self.context.take();
+        CONTEXT.with(|cell| put(cell, context));
     }
 }
 
@@ -181,31 +181,27 @@ fn current_default() -> Option<Box<Context>> {
 /// ```
 #[inline(always)]
 pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
-    CONTEXT.with(|cell| {
-        let context = match take(cell) {
-            Some(context) => context,
-            None => current_default()?,
-        };
-        let mut borrowed = Borrowed {
-            cell,
-            context: Some(context),
-        };
-        borrowed.context.as_deref_mut().map(f)
-    })
+    let context = match CONTEXT.with(take) {
+        Some(context) => context,
+        None => current_default()?,
+    };
+    let mut borrowed = Borrowed {
+        context: Some(context),
+    };
+    borrowed.context.as_deref_mut().map(f)
 }
 
 /// `with_current` for a command's usual case: `None`, with nothing done, when the context is
 /// not in this thread's cell (none current yet, or a call has it out), where `with_current`
-/// would make the default context current. No call but `f`'s.
+/// would make the default context current. No call but `f`'s; the cell is reached twice
+/// (taken, then put back), so that `f` is not inside the thread-local access's closure,
+/// which the compiler then keeps out of line when `f` is large.
 #[inline(always)]
 pub fn with_current_in_slot<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
-    CONTEXT.with(|cell| {
-        let mut borrowed = Borrowed {
-            cell,
-            context: Some(take(cell)?),
-        };
-        borrowed.context.as_deref_mut().map(f)
-    })
+    let mut borrowed = Borrowed {
+        context: Some(CONTEXT.with(take)?),
+    };
+    borrowed.context.as_deref_mut().map(f)
 }
 
 /// Makes `handle` current on this thread (`None` releases the current one). A context that is

@@ -156,13 +156,12 @@ impl Context {
         true
     }
 
-    /// glVertex's usual case, a leaf function with no stack frame (compiled into the entry
-    /// points instead, it kept the thread-local access around it from being inlined there):
-    /// outside display list compilation, a vertex not observed (in GL_RENDER mode), or one
-    /// that goes into a fresh block without completing its batch, with at most the normal
-    /// set since glBegin. `false`, with nothing done, for every other case, which
-    /// `vertex_xyzw` takes.
-    #[inline(never)]
+    /// glVertex's usual case, compiled into the C entry points with no call and no check
+    /// that panics, so that they need no saved registers: outside display list compilation,
+    /// a vertex not observed (in GL_RENDER mode), or one that goes into a fresh block
+    /// without completing its batch, with at most the normal set since glBegin. `false`,
+    /// with nothing done, for every other case, which `vertex_xyzw` takes.
+    #[inline(always)]
     pub(crate) fn try_vertex_quick(&mut self, x: f32, y: f32, z: f32, w: f32) -> bool {
         if self.compiling_list() {
             return false;
