@@ -412,3 +412,74 @@ fn points_laid_out_with_lights(lights: u32) {
         }
     }
 }
+
+// The C entry points, as a C program declares them: their usual case (`try_vertex_quick`,
+// `try_normal_quick`, `try_color_quick`) is compiled apart from the context's methods.
+unsafe extern "C" {
+    fn glBegin(mode: GLenum);
+    fn glEnd();
+    fn glColor4f(r: GLfloat, g: GLfloat, b: GLfloat, a: GLfloat);
+    fn glNormal3fv(v: *const GLfloat);
+    fn glTexCoord4f(s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat);
+    fn glMultiTexCoord4f(unit: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat);
+    fn glSecondaryColor3f(r: GLfloat, g: GLfloat, b: GLfloat);
+    fn glEdgeFlag(flag: GLboolean);
+    fn glMaterialf(face: GLenum, pname: GLenum, param: GLfloat);
+    fn glVertex3fv(v: *const GLfloat);
+    fn glVertex4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat);
+    fn glEvalCoord1d(u: GLdouble);
+    fn glFeedbackBuffer(size: GLsizei, kind: GLenum, buffer: *mut GLfloat);
+    fn glRenderMode(mode: GLenum) -> GLint;
+}
+
+/// `step` through the C entry points, on this thread's current context.
+fn run_c(step: Step) {
+    // SAFETY: the vectors passed hold the values each command reads.
+    unsafe {
+        match step {
+            Step::Color(c) => glColor4f(c.x, c.y, c.z, c.w),
+            Step::Normal(n) => glNormal3fv(n.to_array().as_ptr()),
+            Step::TexCoord(t) => glTexCoord4f(t.x, t.y, t.z, t.w),
+            Step::Unit0TexCoord(t) => glMultiTexCoord4f(GL_TEXTURE0, t.x, t.y, t.z, t.w),
+            Step::SecondaryColor([r, g, b]) => glSecondaryColor3f(r, g, b),
+            Step::EdgeFlag(f) => glEdgeFlag(GLboolean::from(f)),
+            Step::Shininess(s) => glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, s),
+            Step::Vertex(v) if v.w == 1.0 => glVertex3fv(v.truncate().to_array().as_ptr()),
+            Step::Vertex(v) => glVertex4f(v.x, v.y, v.z, v.w),
+            Step::Eval(u) => glEvalCoord1d(u),
+        }
+    }
+}
+
+/// glVertex, glNormal and glColor through the C entry points (whose usual case has a path
+/// of its own) feed back the same values, to the bit, as through the context's methods:
+/// unlit (glColor's usual case) and lit with color material (glColor's general case), with
+/// only normals and colors changing between vertices (glVertex's usual case throughout) and
+/// with every kind of change.
+#[test]
+fn the_c_entry_points_feed_back_what_the_context_methods_do() {
+    const NORMAL_AND_COLOR: u32 = 0b11;
+    for (seed, lights) in [(11, 0), (12, 1), (13, 3)] {
+        for kinds in [NORMAL_AND_COLOR, 1 << 2, 1 << 6, ALL] {
+            let steps = steps(seed, 5000, kinds);
+            let expected = together(&mut scene(lights), &steps);
+            fflight::current::with_current(|ctx| *ctx = scene(lights)).unwrap();
+            let mut buffer = vec![0.0f32; 1 << 20];
+            // SAFETY: the buffer outlives feedback mode, which ends below.
+            let count = unsafe {
+                glFeedbackBuffer(
+                    buffer.len() as GLsizei,
+                    GL_4D_COLOR_TEXTURE,
+                    buffer.as_mut_ptr(),
+                );
+                glRenderMode(GL_FEEDBACK);
+                glBegin(GL_POINTS);
+                steps.iter().for_each(|&s| run_c(s));
+                glEnd();
+                glRenderMode(GL_RENDER)
+            };
+            let what = format!("{lights} lights, changes {kinds:#x}");
+            assert_same_bits(&buffer[..count as usize], &expected, &what);
+        }
+    }
+}

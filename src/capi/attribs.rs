@@ -45,15 +45,15 @@ fn compile(ctx: &mut crate::context::Context, command: Command) -> crate::error:
     ctx.record_or_run(command)
 }
 
-attribute!(color, Color, color_rgba, Vec4, [r, g, b, a]);
+attribute!(any_color, Color, color_rgba, Vec4, [r, g, b, a]);
 attribute!(tex_coord, TexCoord, tex_coord_strq, Vec4, [s, t, r, q]);
 attribute!(any_vertex, Vertex, vertex_xyzw, Vec4, [x, y, z, w]);
 
-/// glVertex and glNormal: their usual case compiled into the entry point with no call,
-/// every other case in a function of its own, called only when the usual case did nothing
-/// (with the context's destructor-free cell of `current`: immediate mode 1 light, median
-/// ratio 0.85 on one thread and 0.84 on two against stop 29's code, 6 of 6 alternating runs
-/// faster each; then the usual case of glVertex inlined, 0.89 and 0.90).
+/// glVertex, glNormal and glColor: their usual case compiled into the entry point with no
+/// call, every other case in a function of its own, called only when the usual case did
+/// nothing (with the context's destructor-free cell of `current`: immediate mode 1 light,
+/// median ratio 0.85 on one thread and 0.84 on two against stop 29's code, 6 of 6
+/// alternating runs faster each; then the usual case of glVertex inlined, 0.89 and 0.90).
 #[inline(always)]
 fn vertex([x, y, z, w]: [f32; 4]) {
     if !with_context_quick(|ctx| ctx.try_vertex_quick(x, y, z, w)) {
@@ -64,6 +64,18 @@ fn vertex([x, y, z, w]: [f32; 4]) {
 #[inline(never)]
 fn any_vertex_call(x: f32, y: f32, z: f32, w: f32) {
     any_vertex([x, y, z, w]);
+}
+
+#[inline(always)]
+fn color([r, g, b, a]: [f32; 4]) {
+    if !with_context_quick(|ctx| ctx.try_color_quick(r, g, b, a)) {
+        any_color_call(r, g, b, a);
+    }
+}
+
+#[inline(never)]
+fn any_color_call(r: f32, g: f32, b: f32, a: f32) {
+    any_color([r, g, b, a]);
 }
 
 #[inline(always)]

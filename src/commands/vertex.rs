@@ -44,8 +44,14 @@ impl Varying {
         self.0 |= other.0;
     }
 
+    /// Whether some attribute of `other` is set.
     fn contains(self, other: Varying) -> bool {
         self.0 & other.0 != 0
+    }
+
+    /// Whether no attribute but the normal and the color is set.
+    fn normal_and_color_at_most(self) -> bool {
+        self.0 & !(Varying::NORMAL.0 | Varying::COLOR.0) == 0
     }
 }
 
@@ -156,11 +162,24 @@ impl Context {
         true
     }
 
+    /// glColor's usual case, compiled into the C entry points: outside display list
+    /// compilation and with color material off, the color stored. `false`, with nothing
+    /// done, otherwise.
+    #[inline(always)]
+    pub(crate) fn try_color_quick(&mut self, r: f32, g: f32, b: f32, a: f32) -> bool {
+        if self.compiling_list() || self.color_material.enabled {
+            return false;
+        }
+        self.current.color = Vec4::new(r, g, b, a);
+        self.vary(Varying::COLOR);
+        true
+    }
+
     /// glVertex's usual case, compiled into the C entry points with no call and no check
     /// that panics, so that they need no saved registers: outside display list compilation,
     /// a vertex not observed (in GL_RENDER mode), or one that goes into a fresh block
-    /// without completing its batch, with at most the normal set since glBegin. `false`,
-    /// with nothing done, for every other case, which `vertex_xyzw` takes.
+    /// without completing its batch, with at most the normal and the color set since
+    /// glBegin. `false`, with nothing done, for every other case, which `vertex_xyzw` takes.
     #[inline(always)]
     pub(crate) fn try_vertex_quick(&mut self, x: f32, y: f32, z: f32, w: f32) -> bool {
         if self.compiling_list() {
@@ -177,7 +196,7 @@ impl Context {
         let last_block = index + 1 == primitive.batch;
         if index >= primitive.pending.fresh
             || primitive.units.is_some()
-            || !(varying == Varying::NORMAL || varying == Varying::empty())
+            || !varying.normal_and_color_at_most()
         {
             return false;
         }
@@ -190,8 +209,11 @@ impl Context {
             return false;
         }
         block.set_position(lane, [x, y, z, w]);
-        if varying == Varying::NORMAL {
+        if varying.contains(Varying::NORMAL) {
             block.set_normal(lane, self.current.normal);
+        }
+        if varying.contains(Varying::COLOR) {
+            block.set_color(lane, self.current.color);
         }
         block.len = lane + 1;
         if block.is_full() {
