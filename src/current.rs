@@ -191,17 +191,27 @@ pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
     borrowed.context.as_deref_mut().map(f)
 }
 
-/// `with_current` for a command's usual case: `None`, with nothing done, when the context is
-/// not in this thread's cell (none current yet, or a call has it out), where `with_current`
-/// would make the default context current. No call but `f`'s; the cell is reached twice
-/// (taken, then put back), so that `f` is not inside the thread-local access's closure,
-/// which the compiler then keeps out of line when `f` is large.
+/// This thread's current context, out of its cell until the returned guard drops (also
+/// when it unwinds): a command's usual case, written without a closure, which the compiler
+/// may keep out of line once it is large. `None`, with nothing done, when the context is not
+/// in the cell (none current yet, or a call has it out), where `with_current` would make the
+/// default context current. The cell is reached twice (taken, then put back by the guard).
 #[inline(always)]
-pub fn with_current_in_slot<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
-    let mut borrowed = Borrowed {
+pub(crate) fn borrow_current_in_slot() -> Option<CurrentContext> {
+    Some(CurrentContext(Borrowed {
         context: Some(CONTEXT.with(take)?),
-    };
-    borrowed.context.as_deref_mut().map(f)
+    }))
+}
+
+/// The current context, lent by `borrow_current_in_slot`.
+pub(crate) struct CurrentContext(Borrowed);
+
+impl CurrentContext {
+    /// The context (always there: `None` is a branch never taken, not a panic).
+    #[inline(always)]
+    pub(crate) fn context(&mut self) -> Option<&mut Context> {
+        self.0.context.as_deref_mut()
+    }
 }
 
 /// Makes `handle` current on this thread (`None` releases the current one). A context that is

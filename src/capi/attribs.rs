@@ -4,7 +4,7 @@
 
 use glam::{Vec3, Vec4};
 
-use super::{read, with_context, with_context_inline, with_context_quick};
+use super::{quick, read, with_context, with_context_inline};
 use crate::commands::list::Command;
 use crate::error::GlError;
 use crate::gl::*;
@@ -56,7 +56,7 @@ attribute!(any_vertex, Vertex, vertex_xyzw, Vec4, [x, y, z, w]);
 /// alternating runs faster each; then the usual case of glVertex inlined, 0.89 and 0.90).
 #[inline(always)]
 fn vertex([x, y, z, w]: [f32; 4]) {
-    if !with_context_quick(|ctx| ctx.try_vertex_quick(x, y, z, w)) {
+    if !quick!(|ctx| ctx.try_vertex_quick(x, y, z, w)) {
         any_vertex_call(x, y, z, w);
     }
 }
@@ -68,7 +68,7 @@ fn any_vertex_call(x: f32, y: f32, z: f32, w: f32) {
 
 #[inline(always)]
 fn color([r, g, b, a]: [f32; 4]) {
-    if !with_context_quick(|ctx| ctx.try_color_quick(r, g, b, a)) {
+    if !quick!(|ctx| ctx.try_color_quick(r, g, b, a)) {
         any_color_call(r, g, b, a);
     }
 }
@@ -80,7 +80,7 @@ fn any_color_call(r: f32, g: f32, b: f32, a: f32) {
 
 #[inline(always)]
 fn normal([x, y, z]: [f32; 3]) {
-    if !with_context_quick(|ctx| ctx.try_normal_quick(x, y, z)) {
+    if !quick!(|ctx| ctx.try_normal_quick(x, y, z)) {
         any_normal(x, y, z);
     }
 }

@@ -63,15 +63,24 @@ pub(crate) fn with_context_inline<R: Default>(
 }
 
 /// The guard of a command's usual case, which cannot panic (no indexing, no call): runs
-/// `command` on the current context and returns whether it did the command; `false` (the
-/// command not done) when no context is in this thread's slot, for the caller to run the
-/// command through `with_context`. Without `catch_unwind`, whose closure the compiler then
-/// keeps out of line, the usual case of glVertex is a leaf with no stack frame; were a panic
-/// to happen here anyway, the `extern "C"` boundary aborts rather than unwind into C.
-#[inline(always)]
-pub(crate) fn with_context_quick(command: impl FnOnce(&mut Context) -> bool) -> bool {
-    current::with_current_in_slot(command).unwrap_or(false)
+/// `$command` (a method call on `$ctx`, which must return whether it did the command) on the
+/// current context, and is `false` (the command not done) when no context is in this
+/// thread's cell, for the caller to run the command through `with_context`. Without
+/// `catch_unwind`, whose closure the compiler keeps out of line, and without a closure of
+/// its own, so that the usual case of glVertex needs no saved registers; were a panic to
+/// happen here anyway, the `extern "C"` boundary aborts rather than unwind into C.
+macro_rules! quick {
+    (|$ctx:ident| $command:expr) => {
+        match crate::current::borrow_current_in_slot() {
+            Some(mut current) => match current.context() {
+                Some($ctx) => $command,
+                None => false,
+            },
+            None => false,
+        }
+    };
 }
+pub(crate) use quick;
 
 /// Whether `count` values are more than any memory holds (isize::MAX bytes): a size made of
 /// hostile arguments, which no pointer can honor; it reads nothing, like NULL.

@@ -222,6 +222,7 @@ impl InputBlock {
     /// block.set_color(7, Vec4::new(0.0, 0.5, 0.0, 1.0));
     /// assert_eq!(block.color[1][7], 0.5);
     /// ```
+    #[inline(always)]
     pub fn set_color(&mut self, lane: usize, color: Vec4) {
         lanes4_set(&mut self.color, lane, color);
     }
