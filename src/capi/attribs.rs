@@ -4,7 +4,7 @@
 
 use glam::{Vec3, Vec4};
 
-use super::{quick, read, with_context, with_context_inline};
+use super::{quick, read, with_context};
 use crate::commands::list::Command;
 use crate::error::GlError;
 use crate::gl::*;
@@ -15,17 +15,32 @@ pub(super) fn record_or_run(command: Command) {
     with_context(|ctx| ctx.record_or_run(command))
 }
 
-/// The vertex attribute commands, the most frequent of all: outside a list they call the
-/// context directly, where building, matching and dropping a `Command` (a large enum) cost
-/// more than the command itself (immediate mode 100M -> 188M instructions for 100K vertices).
-/// The guard is compiled into the entry point and the components reach the context as
-/// separate arguments, in registers: through memory, a vector read back just after being
-/// written as scalars waits for the stores (immediate mode 1 light, 34 -> 23 ns/vertex).
+/// The vertex attribute commands, the most frequent of all. Their usual case, `$usual` (an
+/// expression of `ctx` that is whether it did the command), runs outside display list
+/// compilation with no call, compiled into the entry point (`quick!`): immediate mode 1
+/// light, median ratio 0.85 on one thread and 0.84 on two against the guard and a call per
+/// command, then 0.89 and 0.90 with glVertex's usual case compiled in too. Every other case
+/// goes out of line to `$general`, which compiles the command into the list or calls the
+/// context: building, matching and dropping a `Command` (a large enum) outside a list cost
+/// more than the command itself (immediate mode 100M -> 188M instructions for 100K
+/// vertices). The components travel as separate arguments, in registers: through memory, a
+/// vector read back just after being written as scalars waits for the stores (immediate
+/// mode 1 light, 34 -> 23 ns/vertex).
 macro_rules! attribute {
-    ($name:ident, $variant:ident, $method:ident, $vector:ident, [$($c:ident),+]) => {
+    (
+        $name:ident([$($c:ident),+]; $n:literal) usually |$ctx:ident| $usual:expr;
+        else $general:ident: $variant:ident($vector:ident) by $method:ident
+    ) => {
         #[inline(always)]
-        fn $name([$($c),+]: [f32; 4]) {
-            with_context_inline(move |ctx| {
+        fn $name([$($c),+]: [f32; $n]) {
+            if !quick!(|$ctx| $usual) {
+                $general($($c),+);
+            }
+        }
+
+        #[inline(never)]
+        fn $general($($c: f32),+) {
+            with_context(move |ctx| {
                 if ctx.compiling_list() {
                     compile(ctx, Command::$variant($vector::new($($c),+)))
                 } else {
@@ -45,57 +60,15 @@ fn compile(ctx: &mut crate::context::Context, command: Command) -> crate::error:
     ctx.record_or_run(command)
 }
 
-attribute!(any_color, Color, color_rgba, Vec4, [r, g, b, a]);
-attribute!(tex_coord, TexCoord, tex_coord_strq, Vec4, [s, t, r, q]);
-attribute!(any_vertex, Vertex, vertex_xyzw, Vec4, [x, y, z, w]);
-
-/// glVertex, glNormal and glColor: their usual case compiled into the entry point with no
-/// call, every other case in a function of its own, called only when the usual case did
-/// nothing (with the context's destructor-free cell of `current`: immediate mode 1 light,
-/// median ratio 0.85 on one thread and 0.84 on two against stop 29's code, 6 of 6
-/// alternating runs faster each; then the usual case of glVertex inlined, 0.89 and 0.90).
-#[inline(always)]
-fn vertex([x, y, z, w]: [f32; 4]) {
-    if !quick!(|ctx| ctx.try_vertex_quick(x, y, z, w)) {
-        any_vertex_call(x, y, z, w);
-    }
-}
-
-#[inline(never)]
-fn any_vertex_call(x: f32, y: f32, z: f32, w: f32) {
-    any_vertex([x, y, z, w]);
-}
-
-#[inline(always)]
-fn color([r, g, b, a]: [f32; 4]) {
-    if !quick!(|ctx| ctx.try_color_quick(r, g, b, a)) {
-        any_color_call(r, g, b, a);
-    }
-}
-
-#[inline(never)]
-fn any_color_call(r: f32, g: f32, b: f32, a: f32) {
-    any_color([r, g, b, a]);
-}
-
-#[inline(always)]
-fn normal([x, y, z]: [f32; 3]) {
-    if !quick!(|ctx| ctx.try_normal_quick(x, y, z)) {
-        any_normal(x, y, z);
-    }
-}
-
-#[inline(never)]
-fn any_normal(x: f32, y: f32, z: f32) {
-    with_context(move |ctx| {
-        if ctx.compiling_list() {
-            compile(ctx, Command::Normal(Vec3::new(x, y, z)))
-        } else {
-            ctx.normal_xyz(x, y, z);
-            Ok(())
-        }
-    })
-}
+attribute!(vertex([x, y, z, w]; 4) usually |ctx| ctx.try_vertex_quick(x, y, z, w);
+    else any_vertex: Vertex(Vec4) by vertex_xyzw);
+attribute!(color([r, g, b, a]; 4) usually |ctx| ctx.try_color_quick(r, g, b, a);
+    else any_color: Color(Vec4) by color_rgba);
+attribute!(normal([x, y, z]; 3) usually |ctx| { ctx.normal_xyz(x, y, z); true };
+    else any_normal: Normal(Vec3) by normal_xyz);
+attribute!(tex_coord([s, t, r, q]; 4)
+    usually |ctx| { ctx.tex_coord(Vec4::new(s, t, r, q)); true };
+    else any_tex_coord: TexCoord(Vec4) by tex_coord_strq);
 
 /// A NULL vector: GL_INVALID_VALUE, compiled too (the error is raised when the list
 /// executes). Out of line, so that the entry points build no `Command` on their stack.

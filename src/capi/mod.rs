@@ -44,28 +44,11 @@ pub(crate) fn with_context<R: Default>(command: impl FnOnce(&mut Context) -> GlR
     .unwrap_or_default()
 }
 
-/// `with_context` compiled into its caller: for the vertex attribute commands, called
-/// millions of times a frame, whose arguments then stay in registers (through a call they
-/// go through the stack, and reading a vector back just written as scalars stalls).
-#[inline(always)]
-pub(crate) fn with_context_inline<R: Default>(
-    command: impl FnOnce(&mut Context) -> GlResult<R>,
-) -> R {
-    catch_unwind(AssertUnwindSafe(|| {
-        current::with_current(|ctx| {
-            let result = command(ctx);
-            ctx.settle(result)
-        })
-    }))
-    .ok()
-    .flatten()
-    .unwrap_or_default()
-}
-
 /// The guard of a command's usual case, which cannot panic (no indexing, no call): runs
-/// `$command` (a method call on `$ctx`, which must return whether it did the command) on the
-/// current context, and is `false` (the command not done) when no context is in this
-/// thread's cell, for the caller to run the command through `with_context`. Without
+/// `$command` (an expression of `$ctx` that is whether it did the command) on the current
+/// context outside display list compilation, and is `false` (the command not done) in a list
+/// or when no context is in this thread's cell, for the caller to run the command through
+/// `with_context`. Without
 /// `catch_unwind`, whose closure the compiler keeps out of line, and without a closure of
 /// its own, so that the usual case of glVertex needs no saved registers; were a panic to
 /// happen here anyway, the `extern "C"` boundary aborts rather than unwind into C.
@@ -73,8 +56,8 @@ macro_rules! quick {
     (|$ctx:ident| $command:expr) => {
         match crate::current::borrow_current_in_slot() {
             Some(mut current) => match current.context() {
-                Some($ctx) => $command,
-                None => false,
+                Some($ctx) if !$ctx.compiling_list() => $command,
+                _ => false,
             },
             None => false,
         }

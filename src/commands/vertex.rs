@@ -151,23 +151,12 @@ impl Context {
         self.vertex_components([x, y, z, w]);
     }
 
-    /// glNormal's usual case, compiled into the C entry points: outside display list
-    /// compilation, the normal stored. `false`, with nothing done, in a list.
-    #[inline(always)]
-    pub(crate) fn try_normal_quick(&mut self, x: f32, y: f32, z: f32) -> bool {
-        if self.compiling_list() {
-            return false;
-        }
-        self.normal_xyz(x, y, z);
-        true
-    }
-
-    /// glColor's usual case, compiled into the C entry points: outside display list
-    /// compilation and with color material off, the color stored. `false`, with nothing
-    /// done, otherwise.
+    /// glColor's usual case outside display list compilation, compiled into the C entry
+    /// points: with color material off, the color stored. `false`, with nothing done,
+    /// otherwise.
     #[inline(always)]
     pub(crate) fn try_color_quick(&mut self, r: f32, g: f32, b: f32, a: f32) -> bool {
-        if self.compiling_list() || self.color_material.enabled {
+        if self.color_material.enabled {
             return false;
         }
         self.current.color = Vec4::new(r, g, b, a);
@@ -175,16 +164,13 @@ impl Context {
         true
     }
 
-    /// glVertex's usual case, compiled into the C entry points with no call and no check
-    /// that panics, so that they need no saved registers: outside display list compilation,
+    /// glVertex's usual case outside display list compilation, compiled into the C entry
+    /// points with no call and no check that panics, so that they need no saved registers:
     /// a vertex not observed (in GL_RENDER mode), or one that goes into a fresh block
     /// without completing its batch, with at most the normal and the color set since
     /// glBegin. `false`, with nothing done, for every other case, which `vertex_xyzw` takes.
     #[inline(always)]
     pub(crate) fn try_vertex_quick(&mut self, x: f32, y: f32, z: f32, w: f32) -> bool {
-        if self.compiling_list() {
-            return false;
-        }
         if !self.vertices_observed() {
             return true;
         }
