@@ -535,8 +535,8 @@ fn largest_difference(a: &ProcessedVertex, b: &ProcessedVertex, faces: Faces) ->
 }
 
 /// Random states with integer exponents (every fifth with fractional ones, which the fast
-/// engine leaves to the double-precision one) and without texture coordinate generation
-/// half of the time.
+/// engine leaves to the double-precision one), without texture coordinate generation half
+/// of the time, and every fourth with directional lights alone, none a spot.
 fn random_fast_state(rng: &mut Rng, state: usize) -> Context {
     let mut ctx = random_state(rng);
     if !state.is_multiple_of(5) {
@@ -552,6 +552,15 @@ fn random_fast_state(rng: &mut Rng, state: usize) -> Context {
     if rng.coin() {
         for k in 0..4 {
             ctx.set_capability(GL_TEXTURE_GEN_S + k, false).unwrap();
+        }
+    }
+    if state % 4 == 3 {
+        // Every light directional, without a spot: the kernel's loop of that kind alone.
+        for i in 0..8 {
+            let d = rng.vec4(-1.0, 1.0);
+            ctx.light(GL_LIGHT0 + i, GL_POSITION, &[d.x, d.y, d.z, 0.0])
+                .unwrap();
+            ctx.light(GL_LIGHT0 + i, GL_SPOT_CUTOFF, &[180.0]).unwrap();
         }
     }
     ctx

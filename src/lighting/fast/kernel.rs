@@ -170,12 +170,17 @@ pub(super) fn process_blocks(
         let ins: Inputs = std::array::from_fn(|k| &ins[k]);
         let mut outs = outs.iter_mut();
         let outs: Outputs = std::array::from_fn(|_| outs.next().expect("BLOCKS outputs"));
-        let bits = match (state.lit, two_side, state.local_viewer) {
-            (false, _, _) => group_of::<false, false, false>(state, ins, outs, back, wants_eye),
-            (true, false, false) => group_of::<true, false, false>(state, ins, outs, back, wants_eye),
-            (true, false, true) => group_of::<true, false, true>(state, ins, outs, back, wants_eye),
-            (true, true, false) => group_of::<true, true, false>(state, ins, outs, back, wants_eye),
-            (true, true, true) => group_of::<true, true, true>(state, ins, outs, back, wants_eye),
+        macro_rules! group {
+            ($($key:literal),+) => { group_of::<$($key),+>(state, ins, outs, back, wants_eye) };
+        }
+        let bits = match (state.lit, two_side, state.local_viewer, state.directional) {
+            (false, ..) => group!(false, false, false, false),
+            (true, false, false, true) => group!(true, false, false, true),
+            (true, false, false, false) => group!(true, false, false, false),
+            (true, false, true, _) => group!(true, false, true, false),
+            (true, true, false, true) => group!(true, true, false, true),
+            (true, true, false, false) => group!(true, true, false, false),
+            (true, true, true, _) => group!(true, true, true, false),
         };
         for (k, (refused, input)) in refused.iter_mut().zip(ins).enumerate() {
             *refused = bits.block_bits(k) & crate::lighting::lanes::filled_lanes(input.len);
@@ -289,8 +294,11 @@ struct Vertex {
 
 with_features! {
 // Not inlined: one function per state key keeps each variant's registers to itself.
+// DIRECTIONAL (`FastState::directional`): every light is directional, without a spot; taken
+// with an infinite viewer only. Against the loop over every kind, the 1-light arrays scene
+// with 30,000 points on one thread: 7 of 8 alternating pairs faster, by 1-3%.
 #[inline(never)]
-fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
+fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool, const DIRECTIONAL: bool>(
     state: &FastState,
     ins: Inputs,
     mut outs: Outputs,
@@ -417,6 +425,10 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool>(
                     light, &state.faces, &vertex, &mut sums,
                 )
             };
+        }
+        if DIRECTIONAL {
+            add!(false, false, false);
+            continue;
         }
         match (light.positional, light.spot, light.attenuation) {
             (false, false, _) => add!(false, false, false),

@@ -139,6 +139,9 @@ pub struct FastState {
     /// Some light is positional, or the viewer local: lighting reads the eye coordinates.
     reads_position: bool,
     separate_specular: bool,
+    /// Every light is directional, without a spot: the kernel's light loop has that kind
+    /// alone, so its registers are that kind's (no spills of the sums around the loop).
+    directional: bool,
     lights: [FastLight; MAX_LIGHTS],
     light_count: usize,
     faces: [FastFace; 2],
@@ -217,6 +220,7 @@ impl FastState {
             reads_position: lighting.enabled
                 && (lighting.local_viewer || lighting.lights().any(|l| l.positional)),
             separate_specular: lighting.separate_specular,
+            directional: false,
             lights: [FastLight::default(); MAX_LIGHTS],
             light_count: 0,
             faces: [FastFace::default(); 2],
@@ -241,6 +245,7 @@ impl FastState {
             state.lights[state.light_count] = FastLight::new(light, faces)?;
             state.light_count += 1;
         }
+        state.directional = state.lights().iter().all(|l| !l.positional && !l.spot);
         Some(state)
     }
 
