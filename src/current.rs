@@ -104,9 +104,18 @@ impl Drop for Slot {
     }
 }
 
-/// Gives the context back to its cell when the call ends, also when it unwinds.
-struct Borrowed {
+/// The current context, out of its cell: gives it back when the call ends, also when it
+/// unwinds.
+pub(crate) struct Borrowed {
     context: Option<Box<Context>>,
+}
+
+impl Borrowed {
+    /// The context (always there: `None` is a branch never taken, not a panic).
+    #[inline(always)]
+    pub(crate) fn context(&mut self) -> Option<&mut Context> {
+        self.context.as_deref_mut()
+    }
 }
 
 impl Drop for Borrowed {
@@ -185,10 +194,11 @@ pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
         Some(context) => context,
         None => current_default()?,
     };
-    let mut borrowed = Borrowed {
+    Borrowed {
         context: Some(context),
-    };
-    borrowed.context.as_deref_mut().map(f)
+    }
+    .context()
+    .map(f)
 }
 
 /// This thread's current context, out of its cell until the returned guard drops (also
@@ -197,21 +207,10 @@ pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
 /// in the cell (none current yet, or a call has it out), where `with_current` would make the
 /// default context current. The cell is reached twice (taken, then put back by the guard).
 #[inline(always)]
-pub(crate) fn borrow_current_in_slot() -> Option<CurrentContext> {
-    Some(CurrentContext(Borrowed {
+pub(crate) fn borrow_current_in_slot() -> Option<Borrowed> {
+    Some(Borrowed {
         context: Some(CONTEXT.with(take)?),
-    }))
-}
-
-/// The current context, lent by `borrow_current_in_slot`.
-pub(crate) struct CurrentContext(Borrowed);
-
-impl CurrentContext {
-    /// The context (always there: `None` is a branch never taken, not a panic).
-    #[inline(always)]
-    pub(crate) fn context(&mut self) -> Option<&mut Context> {
-        self.0.context.as_deref_mut()
-    }
+    })
 }
 
 /// Makes `handle` current on this thread (`None` releases the current one). A context that is

@@ -413,8 +413,9 @@ fn points_laid_out_with_lights(lights: u32) {
     }
 }
 
-// The C entry points, as a C program declares them: their usual case (`try_vertex_quick`,
-// `try_normal_quick`, `try_color_quick`) is compiled apart from the context's methods.
+// The C entry points, as a C program declares them: their usual case (`capi::attribs`'
+// `attribute!`: `try_vertex_quick`, `try_color_quick`, glNormal's and glTexCoord's stores) is
+// compiled apart from the context's methods.
 unsafe extern "C" {
     fn glBegin(mode: GLenum);
     fn glEnd();

@@ -107,8 +107,7 @@ impl Context {
     /// # Ok::<(), fflight::GlError>(())
     /// ```
     pub fn color(&mut self, color: Vec4) {
-        self.current.color = color;
-        self.vary(Varying::COLOR);
+        self.store_color(color);
         if self.color_material.enabled {
             self.apply_color_material();
         }
@@ -159,9 +158,15 @@ impl Context {
         if self.color_material.enabled {
             return false;
         }
-        self.current.color = Vec4::new(r, g, b, a);
-        self.vary(Varying::COLOR);
+        self.store_color(Vec4::new(r, g, b, a));
         true
+    }
+
+    /// The current color, set since glBegin: glColor but for color material.
+    #[inline(always)]
+    fn store_color(&mut self, color: Vec4) {
+        self.current.color = color;
+        self.vary(Varying::COLOR);
     }
 
     /// glVertex's usual case outside display list compilation, compiled into the C entry
