@@ -689,23 +689,24 @@ fn every_instruction_set_agrees_with_the_scalar_path() {
             );
             assert_eq!(alone_refused[0], refused[0], "{set:?} state {state}");
             assert_eq!(alone[0], outputs[0], "{set:?} state {state}");
-            // The eye coordinates unread (points and lines without user clip planes): the
-            // rest the same, to the bit.
-            let mut without_eye = [OutputBlock::default(); 3];
-            let mut without_eye_refused = [0u8; 3];
-            let reads = Reads { faces, eye: false };
-            kernel_blocks_on(
-                set,
-                &fast,
-                reads,
-                &inputs,
-                &mut without_eye,
-                &mut without_eye_refused,
-            );
-            assert_eq!(without_eye_refused, refused, "{set:?} state {state}");
-            for (mut block, with_eye) in without_eye.into_iter().zip(&outputs) {
-                block.eye = with_eye.eye;
-                assert_eq!(&block, with_eye, "{set:?} state {state}");
+            // The eye coordinates, secondary colors and texture coordinates unread (points
+            // fed back as GL_3D_COLOR without user clip planes): the rest the same, to the bit.
+            let mut unread = [OutputBlock::default(); 3];
+            let mut unread_refused = [0u8; 3];
+            let reads = Reads {
+                faces,
+                eye: false,
+                secondary: false,
+                tex_coord: false,
+            };
+            kernel_blocks_on(set, &fast, reads, &inputs, &mut unread, &mut unread_refused);
+            assert_eq!(unread_refused, refused, "{set:?} state {state}");
+            for (mut block, all) in unread.into_iter().zip(&outputs) {
+                block.eye = all.eye;
+                block.front_secondary = all.front_secondary;
+                block.back_secondary = all.back_secondary;
+                block.tex_coord = all.tex_coord;
+                assert_eq!(&block, all, "{set:?} state {state}");
             }
         }
     }

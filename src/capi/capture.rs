@@ -306,7 +306,8 @@ pub unsafe extern "C" fn fflLightVertices(
             count,
         );
         // Without a back output, two-sided lighting need not light the back face; without an
-        // eye output, the eye coordinates are computed only where lighting needs them.
+        // eye output, the eye coordinates are computed only where lighting needs them; without
+        // a secondary output, the secondary colors are not stored.
         let reads = Reads {
             faces: if back_primary.is_null() && back_secondary.is_null() {
                 Faces::Front
@@ -314,6 +315,9 @@ pub unsafe extern "C" fn fflLightVertices(
                 Faces::Both
             },
             eye: !eye_positions.is_null(),
+            secondary: !front_secondary.is_null() || !back_secondary.is_null(),
+            // No output takes them.
+            tex_coord: false,
         };
         ctx.light_blocks(
             count,

@@ -36,16 +36,23 @@ pub enum Faces {
     Front,
 }
 
-/// What the consumer of processed vertices reads of them besides their clip and texture
-/// coordinates: the colors of which faces, and whether the eye coordinates.
+/// What the consumer of processed vertices reads of them besides their clip coordinates and
+/// primary colors: the colors of which faces, and whether the eye coordinates, the secondary
+/// colors and the texture coordinates. What is not read is unspecified: the fast engine
+/// computes or copies it only where lighting needs it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Reads {
     /// The faces whose colors are read.
     pub faces: Faces,
     /// Whether the eye coordinates are read (by user clip planes, capture, the raster
-    /// position). Unread, they are unspecified: the fast engine computes them only where
-    /// lighting needs them.
+    /// position).
     pub eye: bool,
+    /// Whether the secondary colors are read (by capture and fflLightVertices' outputs;
+    /// feedback carries the primary color alone).
+    pub secondary: bool,
+    /// Whether the texture coordinates are read (by capture, fflLightVertices' outputs and
+    /// the feedback layouts with texture coordinates).
+    pub tex_coord: bool,
 }
 
 /// Everything: both faces' colors and the eye coordinates.
@@ -55,16 +62,21 @@ impl Default for Reads {
     }
 }
 
-/// The colors of `faces`, and the eye coordinates.
+/// The colors of `faces`, the eye and the texture coordinates.
 impl From<Faces> for Reads {
     fn from(faces: Faces) -> Reads {
-        Reads { faces, eye: true }
+        Reads {
+            faces,
+            eye: true,
+            secondary: true,
+            tex_coord: true,
+        }
     }
 }
 
 /// Processes `inputs` into `outputs` (pairwise; the shorter decides) with the state `derived`:
 /// transformation (§2.11) and lighting (§2.14.1) of every lane, for what `reads` says (a
-/// `Faces` reads the eye coordinates too). Against `DerivedState::process` vertex by vertex:
+/// `Faces` reads everything else too). Against `DerivedState::process` vertex by vertex:
 /// eye (where read), clip and texture coordinates the same to the last bit, colors within
 /// 1e-5 (the fast kernel's bound is 5e-6).
 ///

@@ -96,11 +96,15 @@ pub struct DrawStream {
     capture: Option<capture::CapturedDraw>,
     /// Scratch for clipped polygons, kept across the draw's triangles.
     polygon: Vec<PolygonVertex>,
+    /// Whether the feedback layout carries texture coordinates.
+    feedback_tex_coord: bool,
 }
 
 impl DrawStream {
     /// What the draw reads of its vertices: points and lines only the front colors, unless
-    /// capture records both; the eye coordinates only for capture and user clip planes.
+    /// capture records both; the eye coordinates only for capture and user clip planes; the
+    /// secondary colors only for capture; the texture coordinates for capture and the
+    /// feedback layouts that carry them.
     pub(crate) fn reads(&self) -> Reads {
         let lines_or_points = matches!(
             self.assembler.mode(),
@@ -114,6 +118,8 @@ impl DrawStream {
                 Faces::Both
             },
             eye: captured || self.planes.has_user_planes(),
+            secondary: captured,
+            tex_coord: captured || self.feedback_tex_coord,
         }
     }
 }
@@ -162,6 +168,8 @@ impl Context {
             viewport: self.raster.viewport_map(),
             capture: self.capture.begin_draw(mode),
             polygon: Vec::new(),
+            feedback_tex_coord: self.render_mode == RenderMode::Feedback
+                && self.feedback.layout.is_some_and(|layout| layout.texture),
         }
     }
 

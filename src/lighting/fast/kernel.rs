@@ -139,6 +139,16 @@ impl Sub for V3 {
     }
 }
 
+/// What the kernel computes beyond the clip coordinates and front primary colors
+/// (`process_blocks`).
+#[derive(Clone, Copy)]
+struct Writes {
+    back: bool,
+    eye: bool,
+    secondary: bool,
+    tex_coord: bool,
+}
+
 /// The blocks a vector holds, in and out.
 type Inputs<'a> = [&'a InputBlock; BLOCKS];
 type Outputs<'a> = [&'a mut OutputBlock; BLOCKS];
@@ -158,10 +168,15 @@ pub(super) fn process_blocks(
     let count = inputs.len().min(outputs.len()).min(refused.len());
     debug_assert!(count.is_multiple_of(BLOCKS));
     let two_side = state.two_side && reads.faces == Faces::Both;
-    // What is not read is not written: the back colors are a store each, which a short
-    // kernel waits on; the eye coordinates a product in double precision.
-    let back = reads.faces == Faces::Both;
-    let wants_eye = reads.eye || state.reads_position;
+    // What is not read is not written: the back and secondary colors and the texture
+    // coordinates are a store each, which a short kernel waits on; the eye coordinates a
+    // product in double precision.
+    let writes = Writes {
+        back: reads.faces == Faces::Both,
+        eye: reads.eye || state.reads_position,
+        secondary: reads.secondary,
+        tex_coord: reads.tex_coord,
+    };
     let groups = inputs[..count]
         .chunks_exact(BLOCKS)
         .zip(outputs[..count].chunks_exact_mut(BLOCKS))
@@ -171,7 +186,7 @@ pub(super) fn process_blocks(
         let mut outs = outs.iter_mut();
         let outs: Outputs = std::array::from_fn(|_| outs.next().expect("BLOCKS outputs"));
         macro_rules! group {
-            ($($key:literal),+) => { group_of::<$($key),+>(state, ins, outs, back, wants_eye) };
+            ($($key:literal),+) => { group_of::<$($key),+>(state, ins, outs, writes) };
         }
         let bits = match (state.lit, two_side, state.local_viewer, state.directional) {
             (false, ..) => group!(false, false, false, false),
@@ -302,8 +317,7 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool, con
     state: &FastState,
     ins: Inputs,
     mut outs: Outputs,
-    back: bool,
-    wants_eye: bool,
+    writes: Writes,
 ) -> Mask {
     let object = load4!(ins, position);
     let mut refused = Mask::none();
@@ -312,18 +326,18 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool, con
     }
     let object = [D2::from_f32(object[0]), D2::from_f32(object[1]), D2::from_f32(object[2]), D2::from_f32(object[3])];
     store4!(transform4_exact(&state.object_to_clip, object), outs, clip);
-    let eye = if wants_eye {
+    let eye = if writes.eye {
         let eye = transform4_exact(&state.modelview, object);
         store4!(eye, outs, eye);
         eye
     } else {
         [F::zero(); 4]
     };
-    if state.texture_is_identity {
+    if writes.tex_coord && state.texture_is_identity {
         for (out, input) in outs.iter_mut().zip(ins) {
             out.tex_coord = input.tex_coord;
         }
-    } else {
+    } else if writes.tex_coord {
         let tex_coord = transform4(&state.texture, load4!(ins, tex_coord));
         store4!(tex_coord, outs, tex_coord);
     }
@@ -341,10 +355,14 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool, con
         // what was just stored in halves, which stalls.
         let (primary, secondary) = (clamp4(color), clamp4(secondary));
         store4!(primary, outs, front_primary);
-        store4!(secondary, outs, front_secondary);
-        if back {
+        if writes.secondary {
+            store4!(secondary, outs, front_secondary);
+        }
+        if writes.back {
             store4!(primary, outs, back_primary);
-            store4!(secondary, outs, back_secondary);
+            if writes.secondary {
+                store4!(secondary, outs, back_secondary);
+            }
         }
         return refused;
     }
@@ -450,11 +468,15 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool, con
         // One-sided, the back's colors are the front's, stored from registers too.
         if face == 0 {
             store4!(primary, outs, front_primary);
-            store4!(secondary, outs, front_secondary);
+            if writes.secondary {
+                store4!(secondary, outs, front_secondary);
+            }
         }
-        if face == 1 || (!TWO_SIDE && back) {
+        if face == 1 || (!TWO_SIDE && writes.back) {
             store4!(primary, outs, back_primary);
-            store4!(secondary, outs, back_secondary);
+            if writes.secondary {
+                store4!(secondary, outs, back_secondary);
+            }
         }
         let sensitivity = sums.sensitivity + sums.specular_sensitivity[face];
         let error = sensitivity * normal_scale * F::splat(DOT_ERROR);

@@ -383,7 +383,7 @@ pub(crate) fn process_blocks(
             );
             for (k, &lanes) in refused.iter().enumerate() {
                 let block = first + k;
-                if state.tex_gen {
+                if state.tex_gen && reads.tex_coord {
                     // Refused lanes get theirs from the scalar path.
                     generate_tex_coords(
                         &derived.transform,
