@@ -7,6 +7,7 @@ use glam::{Mat4, Vec4};
 use crate::gl::*;
 use crate::lighting::lanes::{LANES, LanesF32};
 use crate::pipeline::block::InputBlock;
+use crate::pipeline::streaming::prefetch;
 use crate::state::arrays::{ALL_KINDS, ARRAY_KINDS, ArrayKind, ClientArray};
 use crate::state::convert::Component;
 
@@ -254,6 +255,13 @@ fn read_float_run(
     fill_missing(out, size);
 }
 
+/// How many elements ahead of those it reads `ArrayFetch::fill_runs` asks for the arrays'
+/// lines: the hardware's prefetchers bring a draw's arrays into the second-level cache, not
+/// the first. 1M points, 1 light, 2 threads, against none: 1 KiB ahead median pair ratio
+/// 0.968 (8 of 10 faster), 2 KiB 0.973 (7 of 10), 4 KiB 1.01, 0.5 KiB 0.985; with the arrays
+/// in the cache, the same (0.995). The lines of one batch ahead were slower.
+const PREFETCH_AHEAD: usize = 128;
+
 /// The enabled arrays of a draw, ready to fill blocks.
 pub struct ArrayFetch<'a> {
     base: usize,
@@ -412,6 +420,7 @@ impl<'a> ArrayFetch<'a> {
                 source.is_none_or(|s| s.floats.is_some() || unread)
             });
         if !by_array {
+            self.prefetch_ahead(first, inputs.len());
             for (k, input) in inputs.iter_mut().enumerate() {
                 self.fill_run(input, start(k), len(k));
             }
@@ -420,6 +429,7 @@ impl<'a> ArrayFetch<'a> {
         for (k, input) in inputs.iter_mut().enumerate() {
             input.len = len(k);
         }
+        self.prefetch_ahead(first, inputs.len());
         let full = inputs.iter().all(|input| input.len == LANES);
         for (kind, source) in ALL_KINDS.into_iter().zip(&self.arrays) {
             let Some(source) = source else { continue };
@@ -442,6 +452,19 @@ impl<'a> ArrayFetch<'a> {
                     read_float_run(source, size, first + k * LANES, len, out);
                 }
             }
+        }
+    }
+
+    /// Asks for the lines of the elements `blocks` blocks from element `first` will hold
+    /// when they are `PREFETCH_AHEAD` elements on: `fill_runs` reads a draw's runs in order.
+    fn prefetch_ahead(&self, first: usize, blocks: usize) {
+        for source in self.arrays.iter().flatten() {
+            let ahead = first - self.base + PREFETCH_AHEAD;
+            prefetch(
+                source.bytes,
+                ahead * source.stride,
+                blocks * LANES * source.stride,
+            );
         }
     }
 

@@ -1,8 +1,10 @@
-//! Copies of many values into memory that is not read again soon: the application's
-//! feedback buffer, written a chunk of laid-out points at a time. Plain stores first read each
-//! line of the destination into the cache; non-temporal stores write the lines whole, without
-//! that read. Which is faster depends on the CPU (`streaming_pays`). Besides the C ABI layer
-//! and the fast kernel's intrinsics, this is the crate's only `unsafe` code: the stores.
+//! Memory streamed through: copies of many values into memory that is not read again soon
+//! (the application's feedback buffer, written a chunk of laid-out points at a time), and
+//! hints that ask for the lines of arrays read in order a little before they are read. Plain
+//! stores first read each line of the destination into the cache; non-temporal stores write
+//! the lines whole, without that read. Which is faster depends on the CPU (`streaming_pays`).
+//! Besides the C ABI layer and the fast kernel's intrinsics, this is the crate's only
+//! `unsafe` code: the stores and the hints.
 #![allow(unsafe_code)]
 
 use std::sync::OnceLock;
@@ -75,6 +77,37 @@ pub(crate) fn fence() {
     unsafe {
         std::arch::x86_64::_mm_sfence()
     };
+}
+
+/// Asks the first-level cache for the lines that hold `bytes[start..start + len]` (the part
+/// of it inside `bytes`): a hint, which reads nothing the program sees and never faults.
+///
+/// # Examples
+///
+/// ```
+/// use fflight::pipeline::streaming::prefetch;
+/// let bytes = vec![0u8; 1000];
+/// prefetch(&bytes, 900, 500); // the lines of bytes 900..1000
+/// prefetch(&bytes, 2000, 64); // nothing: past the end
+/// ```
+pub fn prefetch(bytes: &[u8], start: usize, len: usize) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
+        let end = bytes.len().min(start.saturating_add(len));
+        let line = |at: usize| {
+            // SAFETY: SSE is part of x86-64; a prefetch reads nothing and cannot fault, and
+            // the address is inside `bytes`.
+            unsafe { _mm_prefetch::<_MM_HINT_T0>(bytes.as_ptr().wrapping_add(at).cast()) }
+        };
+        if start < end {
+            (start..end).step_by(64).for_each(line);
+            // The last line, which the steps miss when `start` is not at a line's start.
+            line(end - 1);
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (bytes, start, len);
 }
 
 /// `copy_streaming` with SSE's `movntps`, four values at a time into 16-byte aligned places,
