@@ -79,8 +79,8 @@ pub(crate) fn fence() {
     };
 }
 
-/// Asks the first-level cache for the lines that hold `bytes[start..start + len]` (the part
-/// of it inside `bytes`): a hint, which reads nothing the program sees and never faults.
+/// Asks the first-level cache for the lines that hold `values[start..start + len]` (the part
+/// of it inside `values`): a hint, which reads nothing the program sees and never faults.
 ///
 /// # Examples
 ///
@@ -90,24 +90,34 @@ pub(crate) fn fence() {
 /// prefetch(&bytes, 900, 500); // the lines of bytes 900..1000
 /// prefetch(&bytes, 2000, 64); // nothing: past the end
 /// ```
-pub fn prefetch(bytes: &[u8], start: usize, len: usize) {
+pub fn prefetch<T>(values: &[T], start: usize, len: usize) {
     #[cfg(target_arch = "x86_64")]
     {
         use std::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
-        let end = bytes.len().min(start.saturating_add(len));
+        let end = values.len().min(start.saturating_add(len));
+        let per_line = (64 / size_of::<T>().max(1)).max(1);
         let line = |at: usize| {
             // SAFETY: SSE is part of x86-64; a prefetch reads nothing and cannot fault, and
-            // the address is inside `bytes`.
-            unsafe { _mm_prefetch::<_MM_HINT_T0>(bytes.as_ptr().wrapping_add(at).cast()) }
+            // the address is inside `values`.
+            unsafe { _mm_prefetch::<_MM_HINT_T0>(values.as_ptr().wrapping_add(at).cast()) }
         };
         if start < end {
-            (start..end).step_by(64).for_each(line);
+            (start..end).step_by(per_line).for_each(line);
             // The last line, which the steps miss when `start` is not at a line's start.
             line(end - 1);
         }
     }
     #[cfg(not(target_arch = "x86_64"))]
-    let _ = (bytes, start, len);
+    let _ = (values, start, len);
+}
+
+/// Asks for the lines of `to[start..start + len]`, which plain stores will soon write, so
+/// that their reads are under way before the stores wait on them; nothing where the copies
+/// into such memory stream (`streaming_pays`), which writes lines without reading them.
+pub(crate) fn prefetch_for_writing(to: &[f32], start: usize, len: usize) {
+    if !streaming_pays() {
+        prefetch(to, start, len);
+    }
 }
 
 /// `copy_streaming` with SSE's `movntps`, four values at a time into 16-byte aligned places,
