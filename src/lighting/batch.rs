@@ -55,14 +55,14 @@ pub struct Reads {
     pub tex_coord: bool,
 }
 
-/// Everything: both faces' colors and the eye coordinates.
+/// Everything.
 impl Default for Reads {
     fn default() -> Reads {
         Faces::Both.into()
     }
 }
 
-/// The colors of `faces`, the eye and the texture coordinates.
+/// The colors of `faces`, and everything else.
 impl From<Faces> for Reads {
     fn from(faces: Faces) -> Reads {
         Reads {

@@ -29,7 +29,8 @@ pub(crate) const MAX_VERTEX_VALUES: usize = 12;
 pub(crate) const MAX_POINT_VALUES: usize = 1 + MAX_VERTEX_VALUES;
 
 /// How many blocks of points ahead of those it lays out in the application's memory the
-/// feedback buffer asks for the lines they will write (as `points::PIECES_AHEAD`).
+/// feedback buffer asks for the lines they will write, which its plain stores would
+/// otherwise wait to read (as `points::PIECES_AHEAD`).
 const BLOCKS_AHEAD: usize = 4;
 
 /// Writes lane `lane` of a block's `[window, color, tex_coord]` to the start of `out` as a
@@ -593,7 +594,7 @@ impl FeedbackBuffer {
             self.written += layout.encode_points(visible, arrays, room);
             // The lines of the block `BLOCKS_AHEAD` on.
             let ahead = self.written + (BLOCKS_AHEAD - 1) * whole;
-            super::streaming::prefetch_for_writing(memory.as_slice(), ahead, whole);
+            super::streaming::prefetch(memory.as_slice(), ahead, whole);
             return;
         }
         let mut values = [0.0; LANES * MAX_POINT_VALUES];

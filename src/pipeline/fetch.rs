@@ -256,10 +256,11 @@ fn read_float_run(
 }
 
 /// How many elements ahead of those it reads `ArrayFetch::fill_runs` asks for the arrays'
-/// lines: the hardware's prefetchers bring a draw's arrays into the second-level cache, not
-/// the first. 1M points, 1 light, 2 threads, against none: 1 KiB ahead median pair ratio
-/// 0.968 (8 of 10 faster), 2 KiB 0.973 (7 of 10), 4 KiB 1.01, 0.5 KiB 0.985; with the arrays
-/// in the cache, the same (0.995). The lines of one batch ahead were slower.
+/// lines (1.5 KiB of an array of 3 floats): the hardware's prefetchers bring a draw's arrays
+/// into the second-level cache, not the first. 1M points, 1 light, 2 threads, against none:
+/// 1 KiB ahead median pair ratio 0.968 (8 of 10 faster), 2 KiB 0.973 (7 of 10), 4 KiB 1.01,
+/// 0.5 KiB 0.985; with the arrays in the cache, the same (0.995). The lines of one batch
+/// ahead were slower.
 const PREFETCH_AHEAD: usize = 128;
 
 /// The enabled arrays of a draw, ready to fill blocks.
@@ -419,8 +420,8 @@ impl<'a> ArrayFetch<'a> {
                 let unread = matches!(kind, ArrayKind::FogCoord | ArrayKind::Index);
                 source.is_none_or(|s| s.floats.is_some() || unread)
             });
+        self.prefetch_ahead(first, inputs.len());
         if !by_array {
-            self.prefetch_ahead(first, inputs.len());
             for (k, input) in inputs.iter_mut().enumerate() {
                 self.fill_run(input, start(k), len(k));
             }
@@ -429,7 +430,6 @@ impl<'a> ArrayFetch<'a> {
         for (k, input) in inputs.iter_mut().enumerate() {
             input.len = len(k);
         }
-        self.prefetch_ahead(first, inputs.len());
         let full = inputs.iter().all(|input| input.len == LANES);
         for (kind, source) in ALL_KINDS.into_iter().zip(&self.arrays) {
             let Some(source) = source else { continue };

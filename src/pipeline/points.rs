@@ -13,7 +13,7 @@ use super::clip::ClipPlanes;
 use super::feedback::{FeedbackLayout, FeedbackStorage};
 use super::fetch::ArrayFetch;
 use super::parallel::{Step, in_order};
-use super::streaming::{copy_streaming, copy_streaming_piece, fence, prefetch_for_writing};
+use super::streaming::{copy_streaming, copy_streaming_piece, fence, prefetch_for_copy};
 use super::vertex::DerivedState;
 use crate::context::{Context, RenderMode};
 use crate::lighting::batch::{Reads, process_blocks};
@@ -94,7 +94,7 @@ pub(crate) struct LaidOutPoints<'a> {
 /// 1 light, 2 threads, against none, median pair ratios 0.927 one piece ahead (9 of 10
 /// faster), 0.896 four (10 of 10), 0.905 eight (8 of 10); sixteen as four. A piece is a
 /// block's values: 256 bytes in GL_3D_COLOR.
-pub(crate) const PIECES_AHEAD: usize = 4;
+const PIECES_AHEAD: usize = 4;
 
 /// Values on their way to their place in the application's memory, a piece at a time.
 #[derive(Debug, Default)]
@@ -121,7 +121,7 @@ impl Delivery<'_> {
         let (piece, rest) = std::mem::take(&mut self.to).split_at_mut(count);
         copy_streaming_piece(piece, &self.values[self.done..][..count]);
         // The lines of the piece `PIECES_AHEAD` on, in the application's memory.
-        prefetch_for_writing(rest, (PIECES_AHEAD - 1) * count, count);
+        prefetch_for_copy(rest, (PIECES_AHEAD - 1) * count, count);
         self.to = rest;
         self.done += count;
         if self.to.is_empty() {

@@ -1,6 +1,6 @@
 //! Memory streamed through: copies of many values into memory that is not read again soon
 //! (the application's feedback buffer, written a chunk of laid-out points at a time), and
-//! hints that ask for the lines of arrays read in order a little before they are read. Plain
+//! hints that ask for the lines of memory read or written in order a little before. Plain
 //! stores first read each line of the destination into the cache; non-temporal stores write
 //! the lines whole, without that read. Which is faster depends on the CPU (`streaming_pays`).
 //! Besides the C ABI layer and the fast kernel's intrinsics, this is the crate's only
@@ -111,10 +111,10 @@ pub fn prefetch<T>(values: &[T], start: usize, len: usize) {
     let _ = (values, start, len);
 }
 
-/// Asks for the lines of `to[start..start + len]`, which plain stores will soon write, so
-/// that their reads are under way before the stores wait on them; nothing where the copies
-/// into such memory stream (`streaming_pays`), which writes lines without reading them.
-pub(crate) fn prefetch_for_writing(to: &[f32], start: usize, len: usize) {
+/// Asks for the lines of `to[start..start + len]`, which `copy_streaming_piece` will soon
+/// write, so that their reads are under way before its plain stores wait on them; nothing
+/// where its stores stream (`streaming_pays`), writing lines without reading them.
+pub(crate) fn prefetch_for_copy(to: &[f32], start: usize, len: usize) {
     if !streaming_pays() {
         prefetch(to, start, len);
     }

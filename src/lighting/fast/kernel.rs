@@ -333,13 +333,15 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool, con
     } else {
         [F::zero(); 4]
     };
-    if writes.tex_coord && state.texture_is_identity {
-        for (out, input) in outs.iter_mut().zip(ins) {
-            out.tex_coord = input.tex_coord;
+    if writes.tex_coord {
+        if state.texture_is_identity {
+            for (out, input) in outs.iter_mut().zip(ins) {
+                out.tex_coord = input.tex_coord;
+            }
+        } else {
+            let tex_coord = transform4(&state.texture, load4!(ins, tex_coord));
+            store4!(tex_coord, outs, tex_coord);
         }
-    } else if writes.tex_coord {
-        let tex_coord = transform4(&state.texture, load4!(ins, tex_coord));
-        store4!(tex_coord, outs, tex_coord);
     }
     for (out, input) in outs.iter_mut().zip(ins) {
         out.edge_flag = input.edge_flag;
