@@ -459,11 +459,13 @@ impl<'a> ArrayFetch<'a> {
     /// when they are `PREFETCH_AHEAD` elements on: `fill_runs` reads a draw's runs in order.
     fn prefetch_ahead(&self, first: usize, blocks: usize) {
         for source in self.arrays.iter().flatten() {
+            // Saturating: past the arrays' end (huge strides included) nothing is asked.
             let ahead = first - self.base + PREFETCH_AHEAD;
+            let start = ahead.saturating_mul(source.stride);
             prefetch(
                 source.bytes,
-                ahead * source.stride,
-                blocks * LANES * source.stride,
+                start,
+                (blocks * LANES).saturating_mul(source.stride),
             );
         }
     }
