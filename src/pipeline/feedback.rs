@@ -28,11 +28,6 @@ pub(crate) const MAX_VERTEX_VALUES: usize = 12;
 /// The most values a fed-back point takes: its token and a vertex.
 pub(crate) const MAX_POINT_VALUES: usize = 1 + MAX_VERTEX_VALUES;
 
-/// How many blocks of points ahead of those it lays out in the application's memory the
-/// feedback buffer asks for the lines they will write, which its plain stores would
-/// otherwise wait to read (as `points::PIECES_AHEAD`).
-const BLOCKS_AHEAD: usize = 4;
-
 /// Writes lane `lane` of a block's `[window, color, tex_coord]` to the start of `out` as a
 /// fed-back vertex of the layout whose flags are `[z, w, color, texture]`; returns how many
 /// values. Inlined with constant flags, it compiles to the layout's moves alone.
@@ -592,9 +587,7 @@ impl FeedbackBuffer {
         {
             let room = &mut memory.as_mut_slice()[self.written..self.written + whole];
             self.written += layout.encode_points(visible, arrays, room);
-            // The lines of the block `BLOCKS_AHEAD` on.
-            let ahead = self.written + (BLOCKS_AHEAD - 1) * whole;
-            super::streaming::prefetch(memory.as_slice(), ahead, whole);
+            super::streaming::prefetch_block_ahead(memory.as_slice(), self.written, whole);
             return;
         }
         let mut values = [0.0; LANES * MAX_POINT_VALUES];

@@ -302,14 +302,19 @@ impl<'a> ArrayFetch<'a> {
         base: usize,
         arrays: [Option<(&ClientArray, &'a [u8])>; ARRAY_KINDS],
     ) -> ArrayFetch<'a> {
+        // Fog coordinates and color indices reach nothing an RGBA vertex computes: their
+        // arrays are neither read nor asked for.
+        let read = |k: usize| !matches!(ALL_KINDS[k], ArrayKind::FogCoord | ArrayKind::Index);
         let arrays = std::array::from_fn(|k| {
-            arrays[k].map(|(array, bytes)| ArraySource {
-                bytes,
-                stride: array.effective_stride(),
-                convert: converter(array, ALL_KINDS[k].normalized()),
-                floats: (array.component_type == GL_FLOAT && (2..=4).contains(&array.size))
-                    .then_some(array.size as usize),
-            })
+            arrays[k]
+                .filter(|_| read(k))
+                .map(|(array, bytes)| ArraySource {
+                    bytes,
+                    stride: array.effective_stride(),
+                    convert: converter(array, ALL_KINDS[k].normalized()),
+                    floats: (array.component_type == GL_FLOAT && (2..=4).contains(&array.size))
+                        .then_some(array.size as usize),
+                })
         });
         ArrayFetch { base, arrays }
     }
@@ -412,14 +417,7 @@ impl<'a> ArrayFetch<'a> {
     pub fn fill_runs(&self, inputs: &mut [InputBlock], first: usize, count: usize) {
         let start = |k: usize| first + k * LANES;
         let len = |k: usize| LANES.min(count - k * LANES);
-        let by_array = ALL_KINDS
-            .into_iter()
-            .zip(&self.arrays)
-            .all(|(kind, source)| {
-                // Fog coordinates and color indices are not read (see `fill_with`).
-                let unread = matches!(kind, ArrayKind::FogCoord | ArrayKind::Index);
-                source.is_none_or(|s| s.floats.is_some() || unread)
-            });
+        let by_array = self.arrays.iter().flatten().all(|s| s.floats.is_some());
         self.prefetch_ahead(first, inputs.len());
         if !by_array {
             for (k, input) in inputs.iter_mut().enumerate() {
@@ -487,9 +485,7 @@ impl<'a> ArrayFetch<'a> {
             let Some(source) = source else { continue };
             let out: &mut [LanesF32] = match kind {
                 ArrayKind::EdgeFlag => &mut edge_flags,
-                // Fog coordinates and color indices reach nothing an RGBA vertex computes.
-                ArrayKind::FogCoord | ArrayKind::Index => continue,
-                _ => float_lanes(kind, block).expect("the other kinds have lanes"),
+                _ => float_lanes(kind, block).expect("the arrays kept have lanes"),
             };
             match (locate(source, &mut offsets), source.floats) {
                 (Some(first), Some(size)) => read_float_run(source, size, first, len, out),

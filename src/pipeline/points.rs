@@ -90,12 +90,6 @@ pub(crate) struct LaidOutPoints<'a> {
     delivering: Delivery<'a>,
 }
 
-/// How many pieces ahead of its copy a delivery asks for the lines it will write: 1M points,
-/// 1 light, 2 threads, against none, median pair ratios 0.927 one piece ahead (9 of 10
-/// faster), 0.896 four (10 of 10), 0.905 eight (8 of 10); sixteen as four. A piece is a
-/// block's values: 256 bytes in GL_3D_COLOR.
-const PIECES_AHEAD: usize = 4;
-
 /// Values on their way to their place in the application's memory, a piece at a time.
 #[derive(Debug, Default)]
 struct Delivery<'a> {
@@ -120,8 +114,8 @@ impl Delivery<'_> {
         };
         let (piece, rest) = std::mem::take(&mut self.to).split_at_mut(count);
         copy_streaming_piece(piece, &self.values[self.done..][..count]);
-        // The lines of the piece `PIECES_AHEAD` on, in the application's memory.
-        prefetch_for_copy(rest, (PIECES_AHEAD - 1) * count, count);
+        // A piece is a block's values.
+        prefetch_for_copy(rest, 0, count);
         self.to = rest;
         self.done += count;
         if self.to.is_empty() {

@@ -111,12 +111,24 @@ pub fn prefetch<T>(values: &[T], start: usize, len: usize) {
     let _ = (values, start, len);
 }
 
-/// Asks for the lines of `to[start..start + len]`, which `copy_streaming_piece` will soon
-/// write, so that their reads are under way before its plain stores wait on them; nothing
-/// where its stores stream (`streaming_pays`), writing lines without reading them.
-pub(crate) fn prefetch_for_copy(to: &[f32], start: usize, len: usize) {
+/// How many blocks' values ahead of those it writes into the application's feedback buffer
+/// a thread asks for the lines it will write, which its plain stores would otherwise wait to
+/// read (the buffer is larger than the caches): 1M points, 1 light, 2 threads, against none,
+/// median pair ratios 0.927 one block ahead (9 of 10 faster), 0.896 four (10 of 10), 0.905
+/// eight (8 of 10); sixteen as four.
+const BLOCKS_AHEAD: usize = 4;
+
+/// Asks for the lines of the block of `len` values `BLOCKS_AHEAD` blocks on in `to`, whose
+/// values from `next` on the next blocks' plain stores will write.
+pub(crate) fn prefetch_block_ahead(to: &[f32], next: usize, len: usize) {
+    prefetch(to, next + (BLOCKS_AHEAD - 1) * len, len);
+}
+
+/// `prefetch_block_ahead` for `copy_streaming_piece`'s copies, a block's values each;
+/// nothing where their stores stream (`streaming_pays`), writing lines without reading them.
+pub(crate) fn prefetch_for_copy(to: &[f32], next: usize, len: usize) {
     if !streaming_pays() {
-        prefetch(to, start, len);
+        prefetch_block_ahead(to, next, len);
     }
 }
 
