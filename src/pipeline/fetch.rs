@@ -137,9 +137,10 @@ fn read_transposed(run: &[u8], stride: usize, lanes: &mut [LanesF32]) {
 
 /// A full block of packed elements of `N` floats (the first `LANES * N` floats of `run`) into
 /// the components `lanes` (the first `N` of them): read as one run of floats and regrouped by
-/// component, which the compiler makes a few blends and permutations of whole registers
-/// (for 3 floats on AVX2, 3 loads and 9 shuffles a block, against 4 x 4 transpositions whose
-/// loads it split into single floats). Elements of 4 floats are the transpositions' own.
+/// component, which the compiler makes blends and permutations of whole registers (for 3
+/// floats on AVX2, 3 loads and about ten shuffles a block, against 4 x 4 transpositions
+/// whose loads it split into single floats). Elements of 4 floats are the transpositions'
+/// own.
 #[inline(always)]
 fn read_packed<const N: usize>(run: &[u8], lanes: &mut [LanesF32]) {
     if N == 4 {
