@@ -578,7 +578,7 @@ mod tests {
     /// Consecutive blocks filled together (`fill_runs`) hold what each filled alone
     /// (`fill_run`) holds, to the bit: arrays of floats alone (read an array at a time, a fog
     /// coordinate array among them), and with an array of bytes or edge flags (block by
-    /// block); over full blocks (packed arrays of 3 and 4 floats read as one run) and over a
+    /// block); over full blocks (packed arrays of 2, 3 and 4 floats read as one run) and over a
     /// last block that is not full; with bytes to spare after the last element, and with none.
     #[test]
     fn blocks_filled_together_equal_blocks_filled_alone() {
@@ -595,6 +595,7 @@ mod tests {
             .map(|k| (k * 7 % 251) as u8 ^ 0x40)
             .collect();
         let (float3, float4, float1) = (array(3, GL_FLOAT), array(4, GL_FLOAT), array(1, GL_FLOAT));
+        let float2 = array(2, GL_FLOAT);
         let (bytes4, flags) = (array(4, GL_UNSIGNED_BYTE), array(1, GL_UNSIGNED_BYTE));
         let kind = |kind| ALL_KINDS.iter().position(|&k| k == kind).unwrap();
         let cases: [&[(ArrayKind, &ClientArray)]; 3] = [
@@ -602,6 +603,7 @@ mod tests {
                 (ArrayKind::Vertex, &float3),
                 (ArrayKind::Normal, &float3),
                 (ArrayKind::Color, &float4),
+                (ArrayKind::TexCoord, &float2),
                 (ArrayKind::FogCoord, &float1),
             ],
             &[(ArrayKind::Vertex, &float3), (ArrayKind::Color, &bytes4)],
