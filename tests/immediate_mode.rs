@@ -359,27 +359,59 @@ fn points_laid_out_by_the_helper_with_one_light_are_the_same_on_any_thread_count
     points_laid_out_with_lights(1);
 }
 
+/// The lengths of the primitives of points the helper lays out.
+const POINTS_LENGTHS: [usize; 4] = [1024, 3000, 4097, 700];
+
+/// A step of drawing the primitives of points the helper lays out.
+enum PointsStep {
+    /// glBegin of primitive `p`.
+    Begin(usize),
+    /// A normal, then a vertex.
+    Point(Vec3, Vec4),
+    End,
+}
+
+/// Each primitive of `POINTS_LENGTHS` in turn, through `step`: its glBegin, a normal and a
+/// vertex at a time (random, the same on every call), its glEnd.
+fn each_point(mut step: impl FnMut(PointsStep)) {
+    let mut rng = Lcg(99);
+    for (p, &length) in POINTS_LENGTHS.iter().enumerate() {
+        step(PointsStep::Begin(p));
+        for _ in 0..length {
+            let normal = Vec3::new(rng.signed(), rng.signed(), rng.signed());
+            let position = Vec4::new(rng.signed(), rng.signed(), rng.signed(), 1.0);
+            step(PointsStep::Point(normal, position));
+        }
+        step(PointsStep::End);
+    }
+}
+
+/// `scene(lights)` with a user clip plane that culls about half of the points.
+fn scene_culling_half(lights: u32) -> Context {
+    let mut ctx = scene(lights);
+    ctx.clip_plane(GL_CLIP_PLANE0, [1.0, 0.5, 0.0, 0.1])
+        .unwrap();
+    ctx.set_capability(GL_CLIP_PLANE0, true).unwrap();
+    ctx
+}
+
 fn points_laid_out_with_lights(lights: u32) {
-    let lengths = [1024, 3000, 4097, 700];
     let draw = |ctx: &mut Context| {
-        let mut rng = Lcg(99);
-        for (p, &length) in lengths.iter().enumerate() {
-            ctx.load_name(p as u32).unwrap();
-            ctx.begin(GL_POINTS).unwrap();
-            for _ in 0..length {
-                ctx.normal(Vec3::new(rng.signed(), rng.signed(), rng.signed()));
-                let position = Vec4::new(rng.signed(), rng.signed(), rng.signed(), 1.0);
+        each_point(|step| match step {
+            PointsStep::Begin(p) => {
+                ctx.load_name(p as u32).unwrap();
+                ctx.begin(GL_POINTS).unwrap();
+            }
+            PointsStep::Point(normal, position) => {
+                ctx.normal(normal);
                 ctx.vertex(position);
             }
-            ctx.end().unwrap();
-        }
+            PointsStep::End => ctx.end().unwrap(),
+        });
     };
     let run = |threads: i32, mode: GLenum, size: i32| {
         fflight::threads::set_threads(threads).unwrap();
-        let mut ctx = scene(lights);
-        ctx.clip_plane(GL_CLIP_PLANE0, [1.0, 0.5, 0.0, 0.1])
-            .unwrap();
-        ctx.set_capability(GL_CLIP_PLANE0, true).unwrap();
+        let mut ctx = scene_culling_half(lights);
         if mode == GL_FEEDBACK {
             ctx.feedback_buffer(size, GL_3D_COLOR, 1).unwrap();
         } else {
@@ -481,6 +513,57 @@ fn the_c_entry_points_feed_back_what_the_context_methods_do() {
             };
             let what = format!("{lights} lights, changes {kinds:#x}");
             assert_same_bits(&buffer[..count as usize], &expected, &what);
+        }
+    }
+}
+
+/// Points the helper places straight into the application's feedback memory (through the C
+/// entry points, which give it): with about half of them culled, with a buffer too small
+/// for them all, with one light and with three, 1, 2 and 3 threads give the same count and
+/// the same buffer to the bit, and nothing is written past the values counted.
+#[test]
+fn points_placed_in_the_application_memory_are_the_same_on_any_thread_count() {
+    // A value no point feeds back: its bits must stay where nothing was written.
+    const UNWRITTEN: f32 = -12345.0;
+    let run = |lights: u32, threads: i32, size: usize| {
+        fflight::threads::set_threads(threads).unwrap();
+        fflight::current::with_current(|ctx| *ctx = scene_culling_half(lights)).unwrap();
+        let mut buffer = vec![UNWRITTEN; size + 64];
+        // SAFETY: the buffer outlives feedback mode, which ends below; the vectors passed hold
+        // three values each.
+        let count = unsafe {
+            glFeedbackBuffer(size as GLsizei, GL_3D_COLOR, buffer.as_mut_ptr());
+            glRenderMode(GL_FEEDBACK);
+            each_point(|step| match step {
+                PointsStep::Begin(_) => glBegin(GL_POINTS),
+                PointsStep::Point(normal, position) => {
+                    glNormal3fv(normal.to_array().as_ptr());
+                    glVertex3fv(position.truncate().to_array().as_ptr());
+                }
+                PointsStep::End => glEnd(),
+            });
+            glRenderMode(GL_RENDER)
+        };
+        fflight::threads::set_threads(0).unwrap();
+        (count, buffer)
+    };
+    for lights in [1, 3] {
+        for size in [1 << 18, 30_000] {
+            let (count, one) = run(lights, 1, size);
+            let written = if count < 0 { size } else { count as usize };
+            assert!(written > 0, "something drawn");
+            assert!(
+                one[written..]
+                    .iter()
+                    .all(|v| v.to_bits() == UNWRITTEN.to_bits()),
+                "nothing past the values"
+            );
+            for threads in [2, 3] {
+                let (many_count, many) = run(lights, threads, size);
+                let what = format!("{lights} lights, size {size}, {threads} threads");
+                assert_eq!(many_count, count, "{what}: count");
+                assert_same_bits(&many, &one, &what);
+            }
         }
     }
 }

@@ -55,6 +55,64 @@ impl ApplicationFloats {
         // SAFETY: the promise of `new`.
         unsafe { std::slice::from_raw_parts_mut(self.pointer, self.len) }
     }
+
+    /// The floats `range` of them, to write (only those: another thread may write others,
+    /// `ApplicationPlaces`).
+    pub(crate) fn range_mut(&mut self, range: std::ops::Range<usize>) -> &mut [GLfloat] {
+        assert!(range.start <= range.end && range.end <= self.len);
+        if range.is_empty() {
+            return &mut [];
+        }
+        // SAFETY: inside the memory (checked), which `new` promises writable.
+        unsafe { std::slice::from_raw_parts_mut(self.pointer.add(range.start), range.len()) }
+    }
+
+    /// The first `len` floats of the same memory (or all of it, if fewer), for another
+    /// thread to write parts of (`ApplicationPlaces`).
+    pub(crate) fn places(&mut self, len: usize) -> ApplicationPlaces {
+        ApplicationPlaces {
+            pointer: self.pointer,
+            len: self.len.min(len),
+        }
+    }
+}
+
+/// The application's feedback memory as a thread without the context sees it: the immediate
+/// mode helper writes there the points it lays out, each chunk's values in a place no other
+/// thread writes or reads meanwhile (`commands::vertex::helper`'s frontier).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ApplicationPlaces {
+    pointer: *mut GLfloat,
+    len: usize,
+}
+
+// SAFETY: the memory is the application's, alive while the context keeps its `ApplicationFloats`;
+// `write`'s contract keeps the writers of each part apart.
+unsafe impl Send for ApplicationPlaces {}
+unsafe impl Sync for ApplicationPlaces {}
+
+impl ApplicationPlaces {
+    /// How many floats the memory holds.
+    pub(crate) fn len(&self) -> usize {
+        self.len
+    }
+
+    /// Copies `values` to the floats from `start` (they must fit: `start + values.len()` at
+    /// most `len`), with `copy_streaming`.
+    ///
+    /// # Safety
+    /// The context's `ApplicationFloats` is still installed, and no other thread reads or
+    /// writes those floats until this thread hands them over (with a release store).
+    pub(crate) unsafe fn write(&self, start: usize, values: &[GLfloat]) {
+        assert!(start <= self.len && values.len() <= self.len - start);
+        if values.is_empty() {
+            return;
+        }
+        // SAFETY: inside the memory (checked), which `new` promises writable and the caller
+        // keeps to this thread.
+        let to = unsafe { std::slice::from_raw_parts_mut(self.pointer.add(start), values.len()) };
+        crate::pipeline::streaming::copy_streaming(to, values);
+    }
 }
 
 /// Fed-back values are already in the buffer glFeedbackBuffer gave; ending selection writes

@@ -22,6 +22,7 @@ mod select;
 mod texture;
 
 pub use feedback::ApplicationFloats;
+pub(crate) use feedback::ApplicationPlaces;
 pub use generated::TableCommand;
 
 use std::panic::{AssertUnwindSafe, catch_unwind};

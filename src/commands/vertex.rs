@@ -2,7 +2,7 @@
 
 use glam::{Vec3, Vec4};
 
-use crate::context::{Context, PrimitiveInProgress};
+use crate::context::{Context, PrimitiveInProgress, RenderMode};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use std::collections::VecDeque;
@@ -583,8 +583,18 @@ impl Context {
             let pending = &mut primitive.pending;
             let job = pending.job.get_or_insert_with(helper::Job::new);
             let reads = primitive.stream.reads();
-            // Points the helper lays out too (made per batch: a glBegin costs nothing more).
-            let points = self.stream_points_sink(&primitive.stream).map(Arc::new);
+            // Points the helper lays out too (made per batch: a glBegin costs nothing more),
+            // and places in the application's feedback memory.
+            let places = match self.render_mode {
+                RenderMode::Feedback => self.feedback.places(),
+                _ => None,
+            };
+            if places.is_some() && pending.in_flight.is_empty() {
+                job.begin_places(self.feedback.written);
+            }
+            let points = self
+                .stream_points_sink(&primitive.stream)
+                .map(|sink| (Arc::new(sink), places));
             if let Some((offer, same_primitive)) = helper::offer(
                 job,
                 &derived,
@@ -631,18 +641,30 @@ impl Context {
             let Some(offer) = in_flight.pop_front() else {
                 return;
             };
-            let collected = helper::collect(job, offer, offers, outputs, |lit| match lit {
-                helper::Lit::Blocks(blocks) => {
-                    for block in blocks {
-                        self.stream_lit_block(stream, block);
+            let collected = helper::collect(job, offer, offers, outputs, |lit| {
+                match lit {
+                    helper::Lit::Blocks(blocks) => {
+                        for block in blocks {
+                            self.stream_lit_block(stream, block);
+                        }
                     }
+                    helper::Lit::Points(points) => self.append_points(points),
+                    helper::Lit::Placed { end } => self.feedback.placed(end),
                 }
-                helper::Lit::Points(points) => self.append_points(points),
+                self.feedback.written
             });
             if spare.len() < helper::RING {
                 spare.push(collected);
             }
         }
+    }
+}
+
+/// Sets every lane of `lanes` to `value`, unless each holds it already (to the bit).
+fn set_every_lane<const N: usize>(lanes: &mut [[f32; LANES]; N], value: [f32; N]) {
+    let holds = |c: usize| lanes[c].iter().all(|v| v.to_bits() == value[c].to_bits());
+    if !(0..N).all(holds) {
+        *lanes = value.map(|c| [c; LANES]);
     }
 }
 
@@ -727,6 +749,18 @@ impl Clone for PendingBlocks {
     }
 }
 
+/// A context dropped between glBegin and glEnd takes its batches in flight back from the
+/// helper, which may be writing points into the application's memory.
+impl Drop for PendingBlocks {
+    fn drop(&mut self) {
+        if let Some(job) = &self.job {
+            for offer in &self.in_flight {
+                helper::withdraw(job, offer);
+            }
+        }
+    }
+}
+
 impl PendingBlocks {
     /// Lights the first `used` blocks into `outputs`.
     fn light(&mut self, derived: &DerivedState, reads: Reads, used: usize) {
@@ -750,17 +784,25 @@ impl PendingBlocks {
 
     /// Block `index`, about to take its first vertex of the primitive: every lane takes
     /// `attribs` (what `InputBlock::with_attribs` gives, in place). Once a primitive per
-    /// block, so glVertex writes only the attributes set since glBegin.
+    /// block, so glVertex writes only the attributes set since glBegin. An attribute whose
+    /// lanes all hold its value already is not written: the blocks a primitive reuses mostly
+    /// do, and when the helper thread has read them, each line written would first be taken
+    /// back from its cache (immediate 1 light, 2 threads, batches shared: 0.89 of the time
+    /// without refreshing at all).
     #[cold]
     #[inline(never)]
     fn refresh(&mut self, index: usize, attribs: &CurrentAttribs) {
         let block = self.block(index);
-        let splat = |v: Vec4| v.to_array().map(|c| [c; LANES]);
-        block.normal = attribs.normal.to_array().map(|c| [c; LANES]);
-        block.color = splat(attribs.color);
-        block.secondary_color = splat(attribs.secondary_color);
-        block.tex_coord = splat(attribs.tex_coord);
-        block.edge_flag = [attribs.edge_flag; LANES];
+        set_every_lane(&mut block.normal, attribs.normal.to_array());
+        set_every_lane(&mut block.color, attribs.color.to_array());
+        set_every_lane(
+            &mut block.secondary_color,
+            attribs.secondary_color.to_array(),
+        );
+        set_every_lane(&mut block.tex_coord, attribs.tex_coord.to_array());
+        if block.edge_flag != [attribs.edge_flag; LANES] {
+            block.edge_flag = [attribs.edge_flag; LANES];
+        }
         self.fresh = index + 1;
     }
 

@@ -380,7 +380,8 @@ impl FeedbackBuffer {
         match &mut self.storage {
             FeedbackStorage::Kept(kept) => kept.extend_from_slice(fitting),
             FeedbackStorage::Application(memory) => {
-                let to = &mut memory.as_mut_slice()[self.written..];
+                // Only the floats written: the immediate mode helper may write later ones.
+                let to = memory.range_mut(self.written..self.written + fitting.len());
                 if fitting.len() > MAX_POINT_VALUES {
                     // A chunk another thread laid out (points, triangles).
                     super::streaming::copy_streaming(to, fitting);
@@ -395,6 +396,22 @@ impl FeedbackBuffer {
         }
     }
 
+    /// Counts the values another thread wrote in their place in the application's memory,
+    /// after those written so far, up to `end`.
+    pub(crate) fn placed(&mut self, end: usize) {
+        debug_assert!(self.written <= end && end <= self.capacity);
+        self.written = end;
+    }
+
+    /// The application's memory, where another thread may place values that fit in the
+    /// capacity; `None` with the context's own storage.
+    pub(crate) fn places(&mut self) -> Option<crate::capi::ApplicationPlaces> {
+        match &mut self.storage {
+            FeedbackStorage::Application(memory) => Some(memory.places(self.capacity)),
+            FeedbackStorage::Kept(_) => None,
+        }
+    }
+
     /// Appends `len` values (at most a triangle's: 2 + 3 * 12) that `write` puts in the slice
     /// it is given: in place in the application's memory when they fit, else through
     /// `values_of`, which keeps those that fit and marks the overflow.
@@ -403,7 +420,7 @@ impl FeedbackBuffer {
         if let FeedbackStorage::Application(memory) = &mut self.storage
             && self.capacity - self.written >= len
         {
-            write(&mut memory.as_mut_slice()[self.written..self.written + len]);
+            write(memory.range_mut(self.written..self.written + len));
             self.written += len;
             return;
         }
@@ -585,7 +602,7 @@ impl FeedbackBuffer {
             && visible == u8::MAX
             && self.capacity - self.written >= whole
         {
-            let room = &mut memory.as_mut_slice()[self.written..self.written + whole];
+            let room = memory.range_mut(self.written..self.written + whole);
             self.written += layout.encode_points(visible, arrays, room);
             super::streaming::prefetch_block_ahead(memory.as_slice(), self.written, whole);
             return;

@@ -125,6 +125,11 @@ impl Delivery<'_> {
 }
 
 impl LaidOutPoints<'_> {
+    /// The values laid out (none in selection mode).
+    pub(crate) fn values(&self) -> &[f32] {
+        &self.values[..self.len]
+    }
+
     /// Copies every value still to go to its place: those being delivered, then those whose
     /// place was just given.
     fn deliver(&mut self) {
@@ -370,7 +375,7 @@ impl Context {
             self.selection.hit(max);
         }
         if self.render_mode == RenderMode::Feedback {
-            self.feedback.values_of(&points.values[..points.len]);
+            self.feedback.values_of(points.values());
         }
     }
 }
