@@ -231,6 +231,65 @@ fn each_vertex_takes_the_attributes_current_at_its_glvertex() {
     }
 }
 
+/// Primitives that reuse the blocks of those before (two or three batches each, with one
+/// light and three, on two threads): an attribute set per vertex in one and not in the next,
+/// or changed between them, still reaches each vertex as current at its glVertex.
+#[test]
+fn primitives_reusing_blocks_take_the_attributes_current_at_each_glvertex() {
+    const NORMAL: u32 = 1 << 1;
+    // Per primitive, the kinds of change between its vertices; between primitives, a color,
+    // texture coordinates, a secondary color and an edge flag, now and then.
+    let kinds = [
+        0b11,
+        NORMAL,
+        NORMAL | 1 << 2,
+        NORMAL,
+        NORMAL | 1 << 4 | 1 << 5,
+        NORMAL,
+        ALL & !(1 << 6),
+        NORMAL,
+        0,
+    ];
+    let mut between = Lcg(5);
+    let primitives: Vec<(Vec<Step>, Vec<Step>)> = kinds
+        .iter()
+        .enumerate()
+        .map(|(p, &kinds)| {
+            let v4 = |r: &mut Lcg| Vec4::new(r.next(), r.next(), r.next(), 1.0);
+            let changes = [
+                Step::Color(v4(&mut between)),
+                Step::TexCoord(v4(&mut between)),
+                Step::SecondaryColor([between.next(), 0.5, 0.25]),
+                Step::EdgeFlag(between.chance(0.5)),
+            ];
+            let before = changes
+                .into_iter()
+                .filter(|_| between.chance(0.4))
+                .collect();
+            (before, steps(40 + p as u32, 2048 + 512 * (p % 3), kinds))
+        })
+        .collect();
+    for lights in [1, 3] {
+        fflight::threads::set_threads(2).unwrap();
+        let got = feedback(&mut scene(lights), GL_4D_COLOR_TEXTURE, |ctx| {
+            for (before, steps) in &primitives {
+                before.iter().for_each(|&s| run(ctx, s));
+                ctx.begin(GL_POINTS).unwrap();
+                steps.iter().for_each(|&s| run(ctx, s));
+                ctx.end().unwrap();
+            }
+        });
+        fflight::threads::set_threads(0).unwrap();
+        let all: Vec<Step> = primitives
+            .iter()
+            .flat_map(|(before, steps)| before.iter().chain(steps))
+            .copied()
+            .collect();
+        let expected = apart(&mut scene(lights), &all);
+        assert_same_bits(&got, &expected, &format!("{lights} lights"));
+    }
+}
+
 #[test]
 fn current_attributes_after_glend_are_the_last_set() {
     let mut ctx = scene(3);

@@ -33,7 +33,7 @@ use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
 use std::thread::Thread;
 use std::time::{Duration, Instant};
 
-use super::{HALF_BLOCKS, HalfBlocks, half_blocks};
+use super::{Filled, HALF_BLOCKS, HalfBlocks, half_blocks};
 use crate::capi::ApplicationPlaces;
 use crate::lighting::batch::{Reads, process_blocks};
 use crate::pipeline::block::{InputBlock, OutputBlock};
@@ -102,8 +102,8 @@ pub(crate) struct Offer {
     points: Option<Arc<PointsSink>>,
     /// The application's feedback memory, where the helper places those points when it can.
     places: Option<ApplicationPlaces>,
-    /// The number of the primitive whose attributes the blocks hold.
-    primitive: u64,
+    /// What the blocks hold.
+    filled: Option<Filled>,
     inputs: [HalfBlocks; 2],
 }
 
@@ -217,26 +217,27 @@ impl Offers {
     }
 }
 
-/// Offers `inputs` (every block full, with the attributes of primitive number `primitive`)
-/// to the helper thread, to light with `derived` for what `reads` says (and lay out into
-/// `points`, if given, and place them in the application's memory, if given too, where the
-/// frontier says: `Job::begin_places` before the first batch in flight); `inputs` gets the blocks of a batch of `spare`, collected before (or
-/// new blocks, if the helper still holds them all) in exchange, to fill again. The job's
-/// batches offered before and not collected must be fewer than `RING`. Returns the offer, and
-/// whether the blocks given in exchange hold the same primitive's attributes. `None` when
-/// there is no helper (it could not be started): nothing is offered, `inputs` is unchanged.
+/// Offers `inputs` (every block full, holding `filled`) to the helper thread, to light with
+/// `derived` for what `reads` says (and lay out into `points`, if given, and place them in
+/// the application's memory, if given too, where the frontier says: `Job::begin_places`
+/// before the first batch in flight); `inputs` gets the blocks of a batch of `spare`,
+/// collected before (or new blocks, if the helper still holds them all) in exchange, to fill
+/// again. The job's batches offered before and not collected must be fewer than `RING`.
+/// Returns the offer, and what the blocks given in exchange hold (`None`: new blocks).
+/// `None` when there is no helper (it could not be started): nothing is offered, `inputs` is
+/// unchanged.
 pub(crate) fn offer(
     job: &Arc<Job>,
     derived: &Arc<DerivedState>,
     reads: Reads,
     points: Option<(Arc<PointsSink>, Option<ApplicationPlaces>)>,
     inputs: &mut [HalfBlocks; 2],
-    primitive: u64,
+    filled: Option<Filled>,
     spare: &mut Vec<Arc<Offer>>,
-) -> Option<(Arc<Offer>, bool)> {
+) -> Option<(Arc<Offer>, Option<Filled>)> {
     let helper = helper()?;
     let reused = std::iter::from_fn(|| spare.pop()).find_map(|spare| Arc::try_unwrap(spare).ok());
-    let same_primitive = reused.as_ref().is_some_and(|r| r.primitive == primitive);
+    let reused_filled = reused.as_ref().and_then(|r| r.filled);
     let fresh = reused.map_or_else(|| [half_blocks(), half_blocks()], |r| r.inputs);
     let (points, places) = points.map_or((None, None), |(sink, places)| (Some(sink), places));
     let offer = Offer {
@@ -245,7 +246,7 @@ pub(crate) fn offer(
         reads,
         points,
         places,
-        primitive,
+        filled,
         inputs: std::mem::replace(inputs, fresh),
     };
     let offer = publish(job, offer);
@@ -256,7 +257,7 @@ pub(crate) fn offer(
     }
     // Costs a system call only when the helper sleeps.
     helper.thread.unpark();
-    Some((offer, same_primitive))
+    Some((offer, reused_filled))
 }
 
 /// Makes `offer` the job's next batch, every chunk offered.
@@ -662,7 +663,7 @@ mod tests {
             reads: Faces::Front.into(),
             points: None,
             places: None,
-            primitive: 1,
+            filled: None,
             inputs: inputs(),
         };
         publish(job, offer)
