@@ -577,14 +577,24 @@ fn the_c_entry_points_feed_back_what_the_context_methods_do() {
 }
 
 /// Points the helper places straight into the application's feedback memory (through the C
-/// entry points, which give it): with about half of them culled, with a buffer too small
-/// for them all, with one light and with three, 1, 2 and 3 threads give the same count and
-/// the same buffer to the bit, and nothing is written past the values counted.
+/// entry points, which give it): with about half of them culled, and with a buffer too
+/// small for them all, 1, 2 and 3 threads give the same count and the same buffer to the
+/// bit, and nothing is written past the values counted.
 #[test]
 fn points_placed_in_the_application_memory_are_the_same_on_any_thread_count() {
+    points_placed_with_lights(3);
+}
+
+/// The same with one light (`SharingChoice`).
+#[test]
+fn points_placed_in_the_application_memory_with_one_light_are_the_same_on_any_thread_count() {
+    points_placed_with_lights(1);
+}
+
+fn points_placed_with_lights(lights: u32) {
     // A value no point feeds back: its bits must stay where nothing was written.
     const UNWRITTEN: f32 = -12345.0;
-    let run = |lights: u32, threads: i32, size: usize| {
+    let run = |threads: i32, size: usize| {
         fflight::threads::set_threads(threads).unwrap();
         fflight::current::with_current(|ctx| *ctx = scene_culling_half(lights)).unwrap();
         let mut buffer = vec![UNWRITTEN; size + 64];
@@ -606,23 +616,21 @@ fn points_placed_in_the_application_memory_are_the_same_on_any_thread_count() {
         fflight::threads::set_threads(0).unwrap();
         (count, buffer)
     };
-    for lights in [1, 3] {
-        for size in [1 << 18, 30_000] {
-            let (count, one) = run(lights, 1, size);
-            let written = if count < 0 { size } else { count as usize };
-            assert!(written > 0, "something drawn");
-            assert!(
-                one[written..]
-                    .iter()
-                    .all(|v| v.to_bits() == UNWRITTEN.to_bits()),
-                "nothing past the values"
-            );
-            for threads in [2, 3] {
-                let (many_count, many) = run(lights, threads, size);
-                let what = format!("{lights} lights, size {size}, {threads} threads");
-                assert_eq!(many_count, count, "{what}: count");
-                assert_same_bits(&many, &one, &what);
-            }
+    for size in [1 << 18, 30_000] {
+        let (count, one) = run(1, size);
+        let written = if count < 0 { size } else { count as usize };
+        assert!(written > 0, "something drawn");
+        assert!(
+            one[written..]
+                .iter()
+                .all(|v| v.to_bits() == UNWRITTEN.to_bits()),
+            "nothing past the values"
+        );
+        for threads in [2, 3] {
+            let (many_count, many) = run(threads, size);
+            let what = format!("{lights} lights, size {size}, {threads} threads");
+            assert_eq!(many_count, count, "{what}: count");
+            assert_same_bits(&many, &one, &what);
         }
     }
 }
