@@ -11,6 +11,7 @@ use std::sync::Arc;
 use crate::lighting::batch::{Reads, process_blocks};
 use crate::lighting::lanes::LANES;
 use crate::pipeline::block::{InputBlock, OutputBlock, lanes4_set};
+use crate::pipeline::streaming::PrefetchW;
 use crate::pipeline::vertex::CurrentAttribs;
 use crate::pipeline::vertex::DerivedState;
 use crate::state::convert::Component;
@@ -255,6 +256,14 @@ impl Context {
         block.len = lane + 1;
         if block.is_full() {
             primitive.filling += 1;
+            // The lines glVertex writes in the block after next, which the helper thread may
+            // hold (it read them in the last batch).
+            if let (Some(prefetch), Some(ahead)) = (
+                primitive.pending.prefetch,
+                primitive.pending.get_block(index + 2),
+            ) {
+                prefetch.lines(ahead, &WRITTEN_LINES);
+            }
         }
         true
     }
@@ -707,6 +716,10 @@ impl Context {
     }
 }
 
+/// The byte offsets of the lines of an `InputBlock` that glVertex's usual case writes: the
+/// positions' and the normals' (224 bytes from the block's start), and its length's.
+const WRITTEN_LINES: [usize; 5] = [0, 64, 128, 192, std::mem::offset_of!(InputBlock, len)];
+
 /// Sets every lane of `lanes` to `value`, unless each holds it already (to the bit).
 fn set_every_lane<const N: usize>(lanes: &mut [[f32; LANES]; N], value: [f32; N]) {
     let holds = |c: usize| lanes[c].iter().all(|v| v.to_bits() == value[c].to_bits());
@@ -756,6 +769,8 @@ pub struct PendingBlocks {
     fresh: usize,
     /// What those blocks hold (`None`: no block was refreshed yet).
     filled: Option<Filled>,
+    /// Asks for the lines glVertex writes ahead, where the CPU can.
+    prefetch: Option<PrefetchW>,
     offers: helper::Offers,
     /// Whether primitives with one light share their batches with the helper.
     sharing: SharingChoice,
@@ -771,6 +786,7 @@ impl Default for PendingBlocks {
             spare: Vec::new(),
             fresh: 0,
             filled: None,
+            prefetch: PrefetchW::detect(),
             offers: Default::default(),
             sharing: Default::default(),
         }
@@ -790,6 +806,7 @@ impl Clone for PendingBlocks {
             spare: Vec::new(),
             fresh: self.fresh,
             filled: self.filled,
+            prefetch: self.prefetch,
             offers: Default::default(),
             sharing: self.sharing.clone(),
         }

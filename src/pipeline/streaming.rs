@@ -3,8 +3,9 @@
 //! hints that ask for the lines of memory read or written in order a little before. Plain
 //! stores first read each line of the destination into the cache; non-temporal stores write
 //! the lines whole, without that read. Which is faster depends on the CPU (`streaming_pays`).
-//! Besides the C ABI layer and the fast kernel's intrinsics, this is the crate's only
-//! `unsafe` code: the stores and the hints.
+//! Besides the C ABI layer, the fast kernel's intrinsics and the call by which the immediate
+//! mode helper writes points into the application's memory (`commands::vertex::helper`'s
+//! `place`), this is the crate's only `unsafe` code: the stores and the hints.
 #![allow(unsafe_code)]
 
 use std::sync::OnceLock;
@@ -189,6 +190,49 @@ mod tests {
                     assert_eq!(to, expected, "length {len}, offset {offset}");
                 }
             }
+        }
+    }
+}
+
+/// The CPU's `prefetchw` (x86-64, CPUID 8000_0001h ECX bit 8), found once: kept by its users
+/// so that asking for lines costs no check of the CPU (glVertex's usual case has no call).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PrefetchW(());
+
+impl PrefetchW {
+    /// The instruction, if the CPU has it.
+    pub(crate) fn detect() -> Option<PrefetchW> {
+        static HAS: OnceLock<bool> = OnceLock::new();
+        let has = *HAS.get_or_init(|| {
+            #[cfg(target_arch = "x86_64")]
+            {
+                use std::arch::x86_64::__cpuid;
+                __cpuid(0x8000_0000).eax >= 0x8000_0001 && __cpuid(0x8000_0001).ecx & 1 << 8 != 0
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            false
+        });
+        has.then_some(PrefetchW(()))
+    }
+
+    /// Asks for the lines of `value` at byte offsets `offsets`, to write them: a hint that
+    /// reads nothing the program sees and never faults, which takes each line from another
+    /// core's cache before the stores that need it wait for it. Immediate mode with one light
+    /// on two threads, batches shared with the helper thread, which read the blocks last: the
+    /// block after next asked for as each fills, median pair ratio 0.84 (8 of 8 faster); four
+    /// blocks ahead, the same.
+    #[inline(always)]
+    pub(crate) fn lines<T>(self, value: &T, offsets: &[usize]) {
+        for &offset in offsets {
+            let at = std::ptr::from_ref(value).cast::<u8>().wrapping_add(offset);
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: the CPU has the instruction (`detect`); a prefetch reads nothing and
+            // cannot fault.
+            unsafe {
+                std::arch::asm!("prefetchw [{}]", in(reg) at, options(nostack, preserves_flags, readonly))
+            };
+            #[cfg(not(target_arch = "x86_64"))]
+            let _ = at;
         }
     }
 }
