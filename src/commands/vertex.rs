@@ -258,10 +258,10 @@ impl Context {
             primitive.filling += 1;
             // The lines glVertex writes in the block after next, which the helper thread may
             // hold (it read them in the last batch).
-            if let (Some(prefetch), Some(ahead)) = (
-                primitive.pending.prefetch,
-                primitive.pending.get_block(index + 2),
-            ) {
+            if let (Some(prefetch), true) =
+                (primitive.pending.prefetch, index + 2 < primitive.batch)
+                && let Some(ahead) = primitive.pending.get_block(index + 2)
+            {
                 prefetch.lines(ahead, &WRITTEN_LINES);
             }
         }
