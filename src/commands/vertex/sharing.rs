@@ -82,15 +82,7 @@ impl SharingChoice {
     /// glBegin of a primitive whose way is to be chosen: the way, and when it began if it is
     /// timed.
     pub(crate) fn begin(&self) -> (Way, Timing) {
-        let forced = match std::env::var("FFL_WAY").as_deref() {
-            Ok("s") => Some(Way::Shared),
-            Ok("a") => Some(Way::Alone),
-            _ => None,
-        }; // XXX-EXPERIMENT
-        (
-            forced.unwrap_or(self.way),
-            Timing(self.after_big.then(Instant::now)),
-        )
+        (self.way, Timing(self.after_big.then(Instant::now)))
     }
 
     /// glEnd of such a primitive, of `vertices` vertices.
