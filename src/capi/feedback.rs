@@ -92,6 +92,22 @@ unsafe impl Send for ApplicationPlaces {}
 unsafe impl Sync for ApplicationPlaces {}
 
 impl ApplicationPlaces {
+    /// Memory of a test's own, which lives as long as the program.
+    #[cfg(test)]
+    pub(crate) fn of_leaked(values: &'static mut [GLfloat]) -> ApplicationPlaces {
+        ApplicationPlaces {
+            pointer: values.as_mut_ptr(),
+            len: values.len(),
+        }
+    }
+
+    /// The floats, read once no thread writes them (tests).
+    #[cfg(test)]
+    pub(crate) fn read(&self) -> Vec<GLfloat> {
+        // SAFETY: the promise of `of_leaked`'s memory; the caller's that no one writes.
+        unsafe { std::slice::from_raw_parts(self.pointer, self.len) }.to_vec()
+    }
+
     /// How many floats the memory holds.
     pub(crate) fn len(&self) -> usize {
         self.len

@@ -792,4 +792,75 @@ mod tests {
             assert_eq!(phase(index), state(offer.seq, Phase::Application));
         }
     }
+
+    /// Points the helper placed in the application's memory, each chunk where the one before
+    /// ended from where the frontier began, are the values one thread lays out, and the
+    /// collecting thread only counts them.
+    #[test]
+    fn placed_points_are_where_one_thread_lays_them_out() {
+        use crate::gl::*;
+        const UNWRITTEN: f32 = -7.0;
+        const START: usize = 5;
+        let mut ctx = crate::Context::new();
+        ctx.set_capability(GL_LIGHTING, true).unwrap();
+        ctx.set_capability(GL_LIGHT0, true).unwrap();
+        ctx.feedback_buffer(1 << 16, GL_3D_COLOR, 1).unwrap();
+        ctx.render_mode(GL_FEEDBACK).unwrap();
+        let sink = ctx
+            .points_sink(ctx.raster.viewport_map(), ctx.clip_planes())
+            .expect("feedback mode");
+        let derived = ctx.shared_derived();
+        let memory = Box::leak(vec![UNWRITTEN; 1 << 16].into_boxed_slice());
+        let places = ApplicationPlaces::of_leaked(memory);
+        let job = Job::new();
+        job.begin_places(START);
+        let offer = publish(
+            &job,
+            Offer {
+                seq: 1,
+                derived: derived.clone(),
+                reads: Faces::Front.into(),
+                points: Some(Arc::new(sink.clone())),
+                places: Some(places),
+                filled: None,
+                inputs: inputs(),
+            },
+        );
+        // One thread's values, the whole batch laid out at once.
+        let mut expected = LaidOutPoints::default();
+        sink.clear(&mut expected, 2 * HALF_BLOCKS);
+        for inputs in &offer.inputs {
+            let mut outputs = vec![OutputBlock::default(); HALF_BLOCKS];
+            process_blocks(&derived, offer.reads, &inputs[..], &mut outputs);
+            outputs
+                .iter()
+                .for_each(|block| sink.lay_out(block, &mut expected));
+        }
+        let expected = expected.values().to_vec();
+        // The helper's work, done here: every chunk in order, each placed.
+        light_chunks(
+            &job,
+            &offer,
+            &mut Box::new([OutputBlock::default(); CHUNK_BLOCKS]),
+        );
+        let mut end = START;
+        let mut scratch = vec![OutputBlock::default(); 2 * HALF_BLOCKS];
+        collect(&job, offer, &mut Offers::default(), &mut scratch, |lit| {
+            match lit {
+                Lit::Placed { end: placed } => end = placed,
+                _ => panic!("a chunk not placed"),
+            }
+            end
+        });
+        let values = places.read();
+        assert_eq!(end, START + expected.len(), "where the values end");
+        assert!(values[START..end] == expected[..], "the values placed");
+        assert!(
+            values[..START]
+                .iter()
+                .chain(&values[end..])
+                .all(|&v| v == UNWRITTEN),
+            "nothing written elsewhere"
+        );
+    }
 }
