@@ -810,8 +810,7 @@ mod tests {
             .points_sink(ctx.raster.viewport_map(), ctx.clip_planes())
             .expect("feedback mode");
         let derived = ctx.shared_derived();
-        let memory = Box::leak(vec![UNWRITTEN; 1 << 16].into_boxed_slice());
-        let places = ApplicationPlaces::of_leaked(memory);
+        let places = ApplicationPlaces::kept_for_tests(vec![UNWRITTEN; 1 << 16]);
         let job = Job::new();
         job.begin_places(START);
         let offer = publish(
