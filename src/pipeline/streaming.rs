@@ -155,45 +155,6 @@ fn stream_sse(to: &mut [f32], from: &[f32]) {
         .copy_from_slice(from_fours.remainder());
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Every length around the streaming threshold, at every offset from a 16-byte
-    /// boundary, copies exactly the values given and writes nothing around them: the copy
-    /// this CPU makes, and the streaming stores whichever CPU this is.
-    #[test]
-    fn a_streamed_copy_is_the_values_and_nothing_else() {
-        let streamed = |to: &mut [f32], from: &[f32]| {
-            #[cfg(target_arch = "x86_64")]
-            stream_sse(&mut to[..from.len()], from);
-            #[cfg(not(target_arch = "x86_64"))]
-            copy_streaming(to, from);
-            fence();
-        };
-        let from: Vec<f32> = (0..5000).map(|k| k as f32 + 0.5).collect();
-        for len in [
-            0,
-            1,
-            7,
-            STREAMING_MIN - 1,
-            STREAMING_MIN,
-            STREAMING_MIN + 3,
-            4099,
-        ] {
-            for offset in 0..4 {
-                let mut expected = vec![-1.0f32; len + 8];
-                expected[offset..offset + len].copy_from_slice(&from[..len]);
-                for copy in [copy_streaming, streamed] {
-                    let mut to = vec![-1.0f32; len + 8];
-                    copy(&mut to[offset..], &from[..len]);
-                    assert_eq!(to, expected, "length {len}, offset {offset}");
-                }
-            }
-        }
-    }
-}
-
 /// The CPU's `prefetchw` (x86-64, CPUID 8000_0001h ECX bit 8), found once: kept by its users
 /// so that asking for lines costs no check of the CPU (glVertex's usual case has no call).
 #[derive(Clone, Copy, Debug)]
@@ -233,6 +194,45 @@ impl PrefetchW {
             };
             #[cfg(not(target_arch = "x86_64"))]
             let _ = at;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every length around the streaming threshold, at every offset from a 16-byte
+    /// boundary, copies exactly the values given and writes nothing around them: the copy
+    /// this CPU makes, and the streaming stores whichever CPU this is.
+    #[test]
+    fn a_streamed_copy_is_the_values_and_nothing_else() {
+        let streamed = |to: &mut [f32], from: &[f32]| {
+            #[cfg(target_arch = "x86_64")]
+            stream_sse(&mut to[..from.len()], from);
+            #[cfg(not(target_arch = "x86_64"))]
+            copy_streaming(to, from);
+            fence();
+        };
+        let from: Vec<f32> = (0..5000).map(|k| k as f32 + 0.5).collect();
+        for len in [
+            0,
+            1,
+            7,
+            STREAMING_MIN - 1,
+            STREAMING_MIN,
+            STREAMING_MIN + 3,
+            4099,
+        ] {
+            for offset in 0..4 {
+                let mut expected = vec![-1.0f32; len + 8];
+                expected[offset..offset + len].copy_from_slice(&from[..len]);
+                for copy in [copy_streaming, streamed] {
+                    let mut to = vec![-1.0f32; len + 8];
+                    copy(&mut to[offset..], &from[..len]);
+                    assert_eq!(to, expected, "length {len}, offset {offset}");
+                }
+            }
         }
     }
 }

@@ -3,8 +3,9 @@
 //! thread streams the batch before it and fills the next. The application's thread collects
 //! each batch in order, one chunk of 16 blocks after another: a chunk the helper has lit is
 //! streamed as it is, a chunk it has not begun is lit there and then by the application's
-//! thread (the helper takes the chunks from the last, so the two meet in the middle of a
-//! batch that neither could light alone in time), a chunk it is lighting is waited for.
+//! thread, a chunk it is lighting is waited for (the helper goes from the first chunk, and the
+//! application's thread meanwhile lights the last ones, so the two meet in the middle of a
+//! batch that neither could light alone in time).
 //! Either way the same function lights the same blocks, so results do not depend on which
 //! thread did it, nor on the thread count, and the order of the feedback is the one thread's.
 //! Only a primitive's batches are in flight, only between its glBegin and glEnd: glEnd and
@@ -494,8 +495,8 @@ fn helper() -> Option<&'static Helper> {
         .as_ref()
 }
 
-/// The helper thread: lights the chunks of each offered batch, from the last, that the
-/// application's thread has not claimed.
+/// The helper thread: lights the chunks of each offered batch that the application's thread
+/// has not claimed, from the first.
 fn run() {
     let Some(helper) = helper() else {
         return;
