@@ -69,7 +69,8 @@ impl FflContext {
 
 /// The context current on this thread, while no GL call of this thread has it out (a call
 /// takes it for its duration, so a re-entrant call finds the cell empty with a handle set,
-/// and is refused). A cell with no destructor, so that a call reaches it at one thread-local
+/// and is refused; the attribute commands' usual case, which calls nothing, uses it where it
+/// is: `current_cell`). A cell with no destructor, so that a call reaches it at one thread-local
 /// address, with no check that it is initialized or registration of a destructor (the
 /// attribute commands' usual case then needs no stack frame); `Slot`, whose destructor is
 /// registered when a context is first made current here, gives it back at the thread's end.
@@ -201,16 +202,11 @@ pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
     .map(f)
 }
 
-/// This thread's current context, out of its cell until the returned guard drops (also
-/// when it unwinds): a command's usual case, written without a closure, which the compiler
-/// may keep out of line once it is large. `None`, with nothing done, when the context is not
-/// in the cell (none current yet, or a call has it out), where `with_current` would make the
-/// default context current. The cell is reached twice (taken, then put back by the guard).
+/// This thread's cell of the current context, for a command's usual case to use the context
+/// in place (`capi::quick!`).
 #[inline(always)]
-pub(crate) fn borrow_current_in_slot() -> Option<Borrowed> {
-    Some(Borrowed {
-        context: Some(CONTEXT.with(take)?),
-    })
+pub(crate) fn current_cell() -> *mut Option<Box<Context>> {
+    CONTEXT.with(|cell| cell.as_ptr().cast())
 }
 
 /// Makes `handle` current on this thread (`None` releases the current one). A context that is

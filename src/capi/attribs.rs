@@ -28,12 +28,23 @@ pub(super) fn record_or_run(command: Command) {
 /// mode 1 light, 34 -> 23 ns/vertex).
 macro_rules! attribute {
     (
-        $name:ident([$($c:ident),+]; $n:literal) usually |$ctx:ident| $usual:expr;
+        $name:ident, $lazy:ident([$($c:ident),+]; $n:literal) usually |$ctx:ident| $usual:expr;
         else $general:ident: $variant:ident($vector:ident) by $method:ident
     ) => {
         #[inline(always)]
-        fn $name([$($c),+]: [f32; $n]) {
-            if !quick!(|$ctx| $usual) {
+        fn $name(components: [f32; $n]) {
+            $lazy(|| components)
+        }
+
+        // The command, its components read only where used (after the checks of the
+        // usual case): read first, they were kept on the stack across them.
+        #[inline(always)]
+        fn $lazy(components: impl Fn() -> [f32; $n]) {
+            if !quick!(|$ctx| {
+                let [$($c),+] = components();
+                $usual
+            }) {
+                let [$($c),+] = components();
                 $general($($c),+);
             }
         }
@@ -60,13 +71,13 @@ fn compile(ctx: &mut crate::context::Context, command: Command) -> crate::error:
     ctx.record_or_run(command)
 }
 
-attribute!(vertex([x, y, z, w]; 4) usually |ctx| ctx.try_vertex_quick(x, y, z, w);
+attribute!(vertex, vertex_lazily([x, y, z, w]; 4) usually |ctx| ctx.try_vertex_quick(x, y, z, w);
     else any_vertex: Vertex(Vec4) by vertex_xyzw);
-attribute!(color([r, g, b, a]; 4) usually |ctx| ctx.try_color_quick(r, g, b, a);
+attribute!(color, color_lazily([r, g, b, a]; 4) usually |ctx| ctx.try_color_quick(r, g, b, a);
     else any_color: Color(Vec4) by color_rgba);
-attribute!(normal([x, y, z]; 3) usually |ctx| { ctx.normal_xyz(x, y, z); true };
+attribute!(normal, normal_lazily([x, y, z]; 3) usually |ctx| { ctx.normal_xyz(x, y, z); true };
     else any_normal: Normal(Vec3) by normal_xyz);
-attribute!(tex_coord([s, t, r, q]; 4)
+attribute!(tex_coord, tex_coord_lazily([s, t, r, q]; 4)
     usually |ctx| { ctx.tex_coord(Vec4::new(s, t, r, q)); true };
     else any_tex_coord: TexCoord(Vec4) by tex_coord_strq);
 
@@ -410,12 +421,11 @@ pub extern "C" fn glNormal3f(nx: GLfloat, ny: GLfloat, nz: GLfloat) {
 /// `v` is NULL or points to the values the command reads.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn glNormal3fv(v: *const GLfloat) {
-    // SAFETY: forwarded from the caller.
-    unsafe {
-        read_vector::<GLfloat, 3>(v, [0.0; 4], Component::normalized, |n| {
-            normal([n[0], n[1], n[2]])
-        })
+    if v.is_null() {
+        return null_vector();
     }
+    // SAFETY: the caller guarantees 3 readable values at a non-NULL `v`.
+    normal_lazily(|| unsafe { [*v, *v.add(1), *v.add(2)] })
 }
 
 #[unsafe(no_mangle)]
@@ -730,8 +740,11 @@ pub extern "C" fn glVertex3f(x: GLfloat, y: GLfloat, z: GLfloat) {
 /// `v` is NULL or points to the values the command reads.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn glVertex3fv(v: *const GLfloat) {
-    // SAFETY: forwarded from the caller.
-    unsafe { read_vector::<GLfloat, 3>(v, [0.0, 0.0, 0.0, 1.0], Component::direct, vertex) }
+    if v.is_null() {
+        return null_vector();
+    }
+    // SAFETY: the caller guarantees 3 readable values at a non-NULL `v`.
+    vertex_lazily(|| unsafe { [*v, *v.add(1), *v.add(2), 1.0] })
 }
 
 #[unsafe(no_mangle)]

@@ -52,15 +52,18 @@ pub(crate) fn with_context<R: Default>(command: impl FnOnce(&mut Context) -> GlR
 /// `with_context`. Without
 /// `catch_unwind`, whose closure the compiler keeps out of line, and without a closure of
 /// its own, so that the usual case of glVertex needs no saved registers; were a panic to
-/// happen here anyway, the `extern "C"` boundary aborts rather than unwind into C.
+/// happen here anyway, the `extern "C"` boundary aborts rather than unwind into C. The
+/// context is used in its cell, not taken out and put back as `with_context` does (which a
+/// re-entrant call must find empty; the usual case calls nothing): two stores fewer a
+/// command, and with the components read only after the checks (`attribute!`), immediate
+/// mode 1 light median pair ratio 0.94 on two threads (6 of 8 faster), 0.96 on one (4 of 6).
 macro_rules! quick {
     (|$ctx:ident| $command:expr) => {
-        match crate::current::borrow_current_in_slot() {
-            Some(mut current) => match current.context() {
-                Some($ctx) if !$ctx.compiling_list() => $command,
-                _ => false,
-            },
-            None => false,
+        // SAFETY: the cell is this thread's, and nothing else reaches it while the usual
+        // case runs (it calls nothing).
+        match unsafe { &mut *crate::current::current_cell() } {
+            Some($ctx) if !$ctx.compiling_list() => $command,
+            _ => false,
         }
     };
 }
