@@ -33,6 +33,11 @@
 //! list void glFogfv(GLenum pname, const GLfloat *params[fog_param_count(pname).unwrap_or(0)]) => ctx.fog(pname, params)
 //! ```
 //!
+//! A line that starts with `overlap` (before `list`) is a command that runs while batches of
+//! points a primitive left to the helper thread at its glEnd are still lit (glBegin, whose
+//! primitive streams them first); every other command first waits for them (`with_context`
+//! against `with_context_overlapping`).
+//!
 //! The generator also writes a variant of `TableCommand` for it, holding its scalar
 //! parameters and a copy of the values each pointer parameter reads (read at compile time, as
 //! §5.4 says), and an arm of `TableCommand::execute` that runs the same expression on them.
@@ -63,6 +68,8 @@ struct EntryPoint {
     docs: Vec<String>,
     /// Compiled into display lists (the line starts with `list`).
     recordable: bool,
+    /// Runs while a primitive's batches are still lit (the line starts with `overlap`).
+    overlaps: bool,
     name: String,
     returns: Option<String>,
     parameters: Vec<Parameter>,
@@ -146,6 +153,10 @@ fn parse_parameter(text: &str) -> Result<Parameter, String> {
 }
 
 fn parse_entry_point(line: &str, docs: Vec<String>) -> Result<EntryPoint, String> {
+    let (overlaps, line) = match line.strip_prefix("overlap ") {
+        Some(rest) => (true, rest.trim_start()),
+        None => (false, line),
+    };
     let (recordable, line) = match line.strip_prefix("list ") {
         Some(rest) => (true, rest.trim_start()),
         None => (false, line),
@@ -192,6 +203,7 @@ fn parse_entry_point(line: &str, docs: Vec<String>) -> Result<EntryPoint, String
     Ok(EntryPoint {
         docs,
         recordable,
+        overlaps,
         name: name.to_string(),
         returns,
         parameters,
@@ -244,7 +256,11 @@ fn write_entry_point(out: &mut String, entry: &EntryPoint) {
             .as_ref()
             .map_or(String::new(), |r| format!(" -> {r}"))
     );
-    out.push_str("    with_context(|ctx| {\n");
+    out.push_str(if entry.overlaps {
+        "    with_context_overlapping(|ctx| {\n"
+    } else {
+        "    with_context(|ctx| {\n"
+    });
     for p in &pointers {
         let (function, count) = match &p.pointer {
             Some(Pointer::Read(count)) => ("read", count),
@@ -416,6 +432,10 @@ pub fn generate(table: &str) -> Result<String, String> {
         (uses_pointer(|p| matches!(p, Pointer::Read(_))), "read"),
         (uses_pointer(|p| matches!(p, Pointer::Fill(_))), "read_mut"),
         (true, "with_context"),
+        (
+            entries.iter().any(|e| e.overlaps),
+            "with_context_overlapping",
+        ),
         (uses_pointer(|p| *p == Pointer::Out), "write"),
     ]
     .iter()

@@ -176,7 +176,9 @@ fn current_default() -> Option<Box<Context>> {
 /// `None` when the thread is exiting or the call is re-entrant (a GL call from a callback).
 ///
 /// This runs around every GL call: a thread-local access, and the context moved out of its
-/// cell and back (two pointer stores), nothing more while a context is current.
+/// cell and back (two pointer stores), nothing more while a context is current (but for
+/// collecting the points of a primitive still lit by the helper thread after its glEnd:
+/// `Context::collect_carried`).
 ///
 /// # Examples
 ///
@@ -191,6 +193,17 @@ fn current_default() -> Option<Box<Context>> {
 /// ```
 #[inline(always)]
 pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
+    with_current_overlapping(|ctx| {
+        ctx.collect_carried();
+        f(ctx)
+    })
+}
+
+/// `with_current` that leaves in flight the batches of points a primitive left to the helper
+/// thread at its glEnd (`Context::collect_carried`): for glBegin, whose primitive collects
+/// them first.
+#[inline(always)]
+pub(crate) fn with_current_overlapping<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
     let context = match CONTEXT.with(take) {
         Some(context) => context,
         None => current_default()?,

@@ -522,6 +522,9 @@ unsafe extern "C" {
     fn glEvalCoord1d(u: GLdouble);
     fn glFeedbackBuffer(size: GLsizei, kind: GLenum, buffer: *mut GLfloat);
     fn glRenderMode(mode: GLenum) -> GLint;
+    fn glPassThrough(token: GLfloat);
+    fn glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei);
+    fn glLightfv(light: GLenum, pname: GLenum, params: *const GLfloat);
 }
 
 /// `step` through the C entry points, on this thread's current context.
@@ -632,4 +635,99 @@ fn points_placed_with_lights(lights: u32) {
         assert_eq!(many_count, count, "{what}: count");
         assert_same_bits(&many, &one, &what);
     }
+}
+
+/// Primitives of whole batches (1024 points each): at their glEnd the helper may still be
+/// lighting and placing the last ones (`PrimitiveInProgress::may_carry`), which the next
+/// command collects first, or the next primitive before its own. Between primitives, the
+/// viewport and a light change (the points in flight keep the state of their glVertex), a
+/// pass-through token is fed back (after the points before it), and another primitive
+/// follows at once; 1 and 2 threads give the same count and buffer, to the bit, also with a
+/// buffer too small for them all.
+#[test]
+fn points_in_flight_past_glend_are_where_one_thread_puts_them() {
+    points_in_flight_past_glend_with_lights(3);
+}
+
+/// The same with one light (`SharingChoice`).
+#[test]
+fn points_in_flight_past_glend_with_one_light_are_where_one_thread_puts_them() {
+    points_in_flight_past_glend_with_lights(1);
+}
+
+fn points_in_flight_past_glend_with_lights(lights: u32) {
+    let run = |threads: i32, size: usize| {
+        fflight::threads::set_threads(threads).unwrap();
+        fflight::current::with_current(|ctx| *ctx = scene_culling_half(lights)).unwrap();
+        let mut buffer = vec![-1.0; size];
+        let mut rng = Lcg(7);
+        // SAFETY: the buffer outlives feedback mode, which ends below; the vectors passed
+        // hold the values each command reads.
+        let count = unsafe {
+            glFeedbackBuffer(size as GLsizei, GL_3D_COLOR, buffer.as_mut_ptr());
+            glRenderMode(GL_FEEDBACK);
+            for (p, batches) in [2, 1, 3, 1, 2].into_iter().enumerate() {
+                glBegin(GL_POINTS);
+                for _ in 0..batches * 1024 {
+                    let normal = [rng.signed(), rng.signed(), rng.signed()];
+                    let position = [rng.signed(), rng.signed(), rng.signed()];
+                    glNormal3fv(normal.as_ptr());
+                    glVertex3fv(position.as_ptr());
+                }
+                glEnd();
+                match p {
+                    0 => glViewport(10, 20, 200, 100),
+                    1 => glLightfv(GL_LIGHT0, GL_POSITION, [0.5, -1.0, 2.0, 0.0].as_ptr()),
+                    2 => glPassThrough(p as f32),
+                    _ => {}
+                }
+            }
+            glRenderMode(GL_RENDER)
+        };
+        fflight::threads::set_threads(0).unwrap();
+        (count, buffer)
+    };
+    for size in [1 << 18, 20_000] {
+        let (count, one) = run(1, size);
+        let (many_count, many) = run(2, size);
+        let what = format!("{lights} lights, size {size}");
+        assert!(count != 0, "{what}: something drawn");
+        assert_eq!(many_count, count, "{what}: count");
+        assert_same_bits(&many, &one, &what);
+    }
+}
+
+/// A context dropped with points still in flight past a glEnd takes them back from the
+/// helper: nothing is written into the application's memory after.
+#[test]
+fn a_context_dropped_with_points_in_flight_past_glend_writes_nothing_after() {
+    let context = fflight::current::FflContext::new();
+    fflight::current::make_current(Some(context.clone())).unwrap();
+    fflight::threads::set_threads(2).unwrap();
+    fflight::current::with_current(|ctx| *ctx = scene(1)).unwrap();
+    let mut buffer = vec![0.0f32; 1 << 16];
+    let mut rng = Lcg(3);
+    // SAFETY: the buffer outlives the context, dropped below; the vectors passed hold the
+    // values each command reads.
+    unsafe {
+        glFeedbackBuffer(buffer.len() as GLsizei, GL_3D_COLOR, buffer.as_mut_ptr());
+        glRenderMode(GL_FEEDBACK);
+        glBegin(GL_POINTS);
+        for _ in 0..4 * 1024 {
+            let normal = [rng.signed(), rng.signed(), rng.signed()];
+            let position = [rng.signed(), rng.signed(), rng.signed()];
+            glNormal3fv(normal.as_ptr());
+            glVertex3fv(position.as_ptr());
+        }
+        glEnd();
+    }
+    fflight::current::make_current(None).unwrap();
+    drop(context);
+    fflight::threads::set_threads(0).unwrap();
+    let after: Vec<u32> = buffer.iter().map(|v| v.to_bits()).collect();
+    std::thread::sleep(std::time::Duration::from_millis(20));
+    assert!(
+        buffer.iter().map(|v| v.to_bits()).eq(after),
+        "written after the context was dropped"
+    );
 }

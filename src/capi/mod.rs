@@ -33,16 +33,34 @@ use crate::error::GlResult;
 
 /// The guard around every entry point: runs `command` on the current context, records its
 /// error, and returns `R::default()` on an error, a panic, or when no context can be had.
+/// Batches of points a primitive left in flight at its glEnd are collected first.
 pub(crate) fn with_context<R: Default>(command: impl FnOnce(&mut Context) -> GlResult<R>) -> R {
-    catch_unwind(AssertUnwindSafe(|| {
+    guarded(|| {
         current::with_current(|ctx| {
             let result = command(ctx);
             ctx.settle(result)
         })
-    }))
-    .ok()
-    .flatten()
-    .unwrap_or_default()
+    })
+}
+
+/// `with_context` for glBegin, whose primitive collects those batches itself, in order.
+pub(crate) fn with_context_overlapping<R: Default>(
+    command: impl FnOnce(&mut Context) -> GlResult<R>,
+) -> R {
+    guarded(|| {
+        current::with_current_overlapping(|ctx| {
+            let result = command(ctx);
+            ctx.settle(result)
+        })
+    })
+}
+
+/// `run`, which keeps panics from crossing into C; `R::default()` when it gives nothing.
+fn guarded<R: Default>(run: impl FnOnce() -> Option<R>) -> R {
+    catch_unwind(AssertUnwindSafe(run))
+        .ok()
+        .flatten()
+        .unwrap_or_default()
 }
 
 /// The guard of a command's usual case, which cannot panic (no indexing, no call): runs

@@ -10,7 +10,9 @@ use std::sync::Arc;
 
 use crate::lighting::batch::{Reads, process_blocks};
 use crate::lighting::lanes::LANES;
+use crate::pipeline::DrawStream;
 use crate::pipeline::block::{InputBlock, OutputBlock, lanes4_set};
+use crate::pipeline::points::LaidOutPoints;
 use crate::pipeline::streaming::PrefetchW;
 use crate::pipeline::vertex::CurrentAttribs;
 use crate::pipeline::vertex::DerivedState;
@@ -515,7 +517,9 @@ impl Context {
     /// # Ok::<(), fflight::GlError>(())
     /// ```
     pub fn end(&mut self) -> GlResult {
-        self.flush_vertices();
+        if !self.primitive.as_ref().is_some_and(|p| p.may_carry()) {
+            self.flush_vertices();
+        }
         let primitive = self.primitive.take().ok_or(GlError::InvalidOperation)?;
         let PrimitiveInProgress {
             mut pending,
@@ -679,15 +683,35 @@ impl Context {
     /// Streams the batches the helper thread has, oldest first, once lit, until `keep` are
     /// left in flight.
     fn stream_in_flight(&mut self, primitive: &mut PrimitiveInProgress, keep: usize) {
-        let PrimitiveInProgress {
-            pending, stream, ..
-        } = primitive;
+        self.collect_in_flight(&mut primitive.pending, Some(&mut primitive.stream), keep);
+    }
+
+    /// Collects the batches of points that a primitive left to the helper thread at its
+    /// glEnd (`PrimitiveInProgress::may_carry`), before any command but glBegin runs: the
+    /// GL's memory is then as if they had been lit at the glEnd.
+    pub(crate) fn collect_carried(&mut self) {
+        if let Some(mut pending) = self.spare_pending.take_if(|p| !p.in_flight.is_empty()) {
+            self.collect_in_flight(&mut pending, None, 0);
+            self.spare_pending = Some(pending);
+        }
+    }
+
+    /// `stream_in_flight` of `pending`'s batches: those laid out as points by the helper go
+    /// through their own sink (those carried past their primitive's glEnd among them, which
+    /// another primitive, or none, collects), the others through `stream`.
+    fn collect_in_flight(
+        &mut self,
+        pending: &mut PendingBlocks,
+        mut stream: Option<&mut DrawStream>,
+        keep: usize,
+    ) {
         let PendingBlocks {
             job,
             in_flight,
             spare,
             offers,
             outputs,
+            laid_out,
             ..
         } = pending;
         let Some(job) = job else {
@@ -697,13 +721,25 @@ impl Context {
             let Some(offer) = in_flight.pop_front() else {
                 return;
             };
+            let sink = offer.points_sink().cloned();
             let collected = helper::collect(job, offer, offers, outputs, |lit| {
                 match lit {
-                    helper::Lit::Blocks(blocks) => {
-                        for block in blocks {
-                            self.stream_lit_block(stream, block);
+                    helper::Lit::Blocks(blocks) => match (&sink, stream.as_deref_mut()) {
+                        (Some(sink), _) => {
+                            sink.clear(laid_out, blocks.len());
+                            for block in blocks {
+                                sink.lay_out(block, laid_out);
+                            }
+                            self.append_points(laid_out);
                         }
-                    }
+                        (None, Some(stream)) => {
+                            for block in blocks {
+                                self.stream_lit_block(stream, block);
+                            }
+                        }
+                        // Only batches of points outlive their primitive.
+                        (None, None) => {}
+                    },
                     helper::Lit::Points(points) => self.append_points(points),
                     helper::Lit::Placed { end } => self.feedback.placed(end),
                 }
@@ -713,6 +749,23 @@ impl Context {
                 spare.push(collected);
             }
         }
+    }
+}
+
+impl PrimitiveInProgress {
+    /// Whether glEnd may leave the primitive's batches in flight, for the next command to
+    /// collect (`Context::collect_carried`) or the next primitive to stream before its own,
+    /// while the application's thread goes on: when every vertex is in a batch the helper
+    /// places as points in the application's feedback memory, which nothing else reads
+    /// before the next command (glRenderMode's count, above all). Immediate mode, 1 light,
+    /// 2 threads: at glEnd the application's thread waited for the last batch, lighting its
+    /// second half; leaving it in flight, median pair ratio 0.89 (8 of 8 faster).
+    fn may_carry(&self) -> bool {
+        let pending = &self.pending;
+        self.filling == 0
+            && pending.halves[0][0].len == 0
+            && !pending.in_flight.is_empty()
+            && pending.in_flight.iter().all(|offer| offer.places_points())
     }
 }
 
@@ -771,6 +824,8 @@ pub struct PendingBlocks {
     filled: Option<Filled>,
     /// Asks for the lines glVertex writes ahead, where the CPU can.
     prefetch: Option<PrefetchW>,
+    /// The points of blocks lit here, laid out by the sink of the batch they are in.
+    laid_out: LaidOutPoints<'static>,
     offers: helper::Offers,
     /// Whether primitives with one light share their batches with the helper.
     sharing: SharingChoice,
@@ -787,6 +842,7 @@ impl Default for PendingBlocks {
             fresh: 0,
             filled: None,
             prefetch: PrefetchW::detect(),
+            laid_out: LaidOutPoints::default(),
             offers: Default::default(),
             sharing: Default::default(),
         }
@@ -807,6 +863,7 @@ impl Clone for PendingBlocks {
             fresh: self.fresh,
             filled: self.filled,
             prefetch: self.prefetch,
+            laid_out: LaidOutPoints::default(),
             offers: Default::default(),
             sharing: self.sharing.clone(),
         }

@@ -109,6 +109,16 @@ pub(crate) struct Offer {
 }
 
 impl Offer {
+    /// The sink that lays out the batch's points, when the helper does.
+    pub(crate) fn points_sink(&self) -> Option<&Arc<PointsSink>> {
+        self.points.as_ref()
+    }
+
+    /// Whether the helper places the batch's points in the application's memory.
+    pub(crate) fn places_points(&self) -> bool {
+        self.points.is_some() && self.places.is_some()
+    }
+
     /// Lights chunk `index` into `outputs`.
     fn light(&self, index: usize, outputs: &mut [OutputBlock]) {
         let first = blocks_of(index).start;
@@ -573,10 +583,9 @@ fn light_chunks(job: &Job, offer: &Offer, scratch: &mut Box<[OutputBlock; CHUNK_
 #[allow(unsafe_code)]
 fn place(job: &Job, seq: u64, index: usize, places: &ApplicationPlaces, values: &[f32]) -> bool {
     let number = chunk_number(seq, index);
-    let now = job.frontier.load(Ordering::Acquire);
-    if (now >> 32) as u32 != number {
+    let Some(now) = frontier_at(job, number) else {
         return false;
-    }
+    };
     let start = now as u32 as usize;
     let end = start + values.len();
     let (Ok(end_value), true) = (u32::try_from(end), end <= places.len()) else {
@@ -608,6 +617,29 @@ fn place(job: &Job, seq: u64, index: usize, places: &ApplicationPlaces, values: 
         .state
         .store(state(seq, Phase::Placed), Ordering::Release);
     true
+}
+
+/// The frontier once it reaches chunk `number`, waited for while the application's thread
+/// streams the chunks before (`None` if it does not come within `LONG_WAIT`). Not waited
+/// for, a chunk the helper laid out before the application's thread finished the batch
+/// before was not placed, nor then any after it in its batch and the next (their frontier
+/// comes only as that thread copies them): 14% of the chunks with one light, against none.
+fn frontier_at(job: &Job, number: u32) -> Option<u64> {
+    let mut waiting: Option<Instant> = None;
+    loop {
+        let now = job.frontier.load(Ordering::Acquire);
+        let behind = number.wrapping_sub((now >> 32) as u32);
+        if behind == 0 {
+            return Some(now);
+        }
+        // Beyond the batches in flight: not a frontier this chunk follows.
+        if behind > (RING * CHUNKS) as u32
+            || waiting.get_or_insert_with(Instant::now).elapsed() > LONG_WAIT
+        {
+            return None;
+        }
+        std::hint::spin_loop();
+    }
 }
 
 /// Waits for a job in the mailbox: watching it for `SPIN`, then asleep until `offer` wakes
