@@ -637,9 +637,11 @@ fn points_placed_with_lights(lights: u32) {
     }
 }
 
-/// Primitives of whole batches (1024 points each): at their glEnd the helper may still be
-/// lighting and placing the last ones (`PrimitiveInProgress::may_carry`), which the next
-/// command collects first, or the next primitive before its own. Between primitives, the
+/// Primitives of points in batches of 1024, whole or not: at their glEnd the helper may
+/// still be lighting and placing the last ones (`PrimitiveInProgress::may_carry`; a
+/// primitive's last blocks go to it too, a batch that ends early), which the next command
+/// collects first, or the next primitive before its own (a short one, 700 points, among
+/// them). Between primitives, the
 /// viewport and a light change (the points in flight keep the state of their glVertex), a
 /// pass-through token is fed back (after the points before it), and another primitive
 /// follows at once; 1 and 2 threads give the same count and buffer, to the bit, also with a
@@ -666,9 +668,9 @@ fn points_in_flight_past_glend_with_lights(lights: u32) {
         let count = unsafe {
             glFeedbackBuffer(size as GLsizei, GL_3D_COLOR, buffer.as_mut_ptr());
             glRenderMode(GL_FEEDBACK);
-            for (p, batches) in [2, 1, 3, 1, 2].into_iter().enumerate() {
+            for (p, points) in [2048, 1500, 3072, 700, 2500].into_iter().enumerate() {
                 glBegin(GL_POINTS);
-                for _ in 0..batches * 1024 {
+                for _ in 0..points {
                     let normal = [rng.signed(), rng.signed(), rng.signed()];
                     let position = [rng.signed(), rng.signed(), rng.signed()];
                     glNormal3fv(normal.as_ptr());

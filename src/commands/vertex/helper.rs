@@ -8,9 +8,12 @@
 //! batch that neither could light alone in time).
 //! Either way the same function lights the same blocks, so results do not depend on which
 //! thread did it, nor on the thread count, and the order of the feedback is the one thread's.
-//! Only a primitive's batches are in flight, only between its glBegin and glEnd: glEnd and
-//! glMaterial (the one command between them that changes how vertices are lit) collect
-//! first, so nothing is in flight when any other command runs.
+//! A primitive's batches are in flight between its glBegin and glEnd, collected first by
+//! glMaterial (the one command between them that changes how vertices are lit) and by glEnd;
+//! a primitive of points placed in the application's memory leaves them in flight past its
+//! glEnd (its last blocks offered too, a batch that ends early), for the next primitive to
+//! stream before its own or any other command to collect first (`Context::collect_carried`),
+//! so nothing is in flight when a command that could see their points runs.
 //!
 //! In feedback mode into the application's memory, the helper also places the points it lays
 //! out there, when it knows where: both threads go through a batch from its first chunk, and
@@ -106,6 +109,8 @@ pub(crate) struct Offer {
     /// What the blocks hold.
     filled: Option<Filled>,
     inputs: [HalfBlocks; 2],
+    /// How many of them, from the first, hold vertices: all but in a primitive's last batch.
+    blocks: usize,
 }
 
 impl Offer {
@@ -119,13 +124,45 @@ impl Offer {
         self.points.is_some() && self.places.is_some()
     }
 
-    /// Lights chunk `index` into `outputs`.
-    fn light(&self, index: usize, outputs: &mut [OutputBlock]) {
-        let first = blocks_of(index).start;
-        let inputs: &[InputBlock] =
-            &self.inputs[first / HALF_BLOCKS][first % HALF_BLOCKS..][..CHUNK_BLOCKS];
-        process_blocks(&self.derived, self.reads, inputs, outputs);
+    /// How many chunks hold vertices.
+    fn chunks(&self) -> usize {
+        self.blocks.div_ceil(CHUNK_BLOCKS)
     }
+
+    /// How many blocks of chunk `index` hold vertices.
+    fn blocks_in(&self, index: usize) -> usize {
+        self.blocks
+            .saturating_sub(index * CHUNK_BLOCKS)
+            .min(CHUNK_BLOCKS)
+    }
+
+    /// The number of the chunk whose values come after chunk `index`'s, as the frontier counts
+    /// them: the next batch's first after the last that holds vertices.
+    fn next_chunk(&self, index: usize) -> u32 {
+        if index + 1 < self.chunks() {
+            chunk_number(self.seq, index + 1)
+        } else {
+            chunk_number(self.seq + 1, 0)
+        }
+    }
+
+    /// Lights chunk `index` into the start of `outputs`; returns how many blocks it has.
+    fn light(&self, index: usize, outputs: &mut [OutputBlock]) -> usize {
+        let first = blocks_of(index).start;
+        let blocks = self.blocks_in(index);
+        let inputs: &[InputBlock] =
+            &self.inputs[first / HALF_BLOCKS][first % HALF_BLOCKS..][..blocks];
+        process_blocks(&self.derived, self.reads, inputs, &mut outputs[..blocks]);
+        blocks
+    }
+}
+
+/// The blocks a batch offers: `blocks` of `halves`, from the first, which hold `filled`
+/// (`None` if not all of them do).
+pub(crate) struct OfferedBlocks<'a> {
+    pub(crate) halves: &'a mut [HalfBlocks; 2],
+    pub(crate) blocks: usize,
+    pub(crate) filled: Option<Filled>,
 }
 
 /// A chunk of a batch: who lights it, and what the helper lit (or laid out).
@@ -228,7 +265,7 @@ impl Offers {
     }
 }
 
-/// Offers `inputs` (every block full, holding `filled`) to the helper thread, to light with
+/// Offers `inputs`' blocks (full but for the last, holding its `filled`) to the helper thread, to light with
 /// `derived` for what `reads` says (and lay out into `points`, if given, and place them in
 /// the application's memory, if given too, where the frontier says: `Job::begin_places`
 /// before the first batch in flight); `inputs` gets the blocks of a batch of `spare`,
@@ -242,8 +279,7 @@ pub(crate) fn offer(
     derived: &Arc<DerivedState>,
     reads: Reads,
     points: Option<(Arc<PointsSink>, Option<ApplicationPlaces>)>,
-    inputs: &mut [HalfBlocks; 2],
-    filled: Option<Filled>,
+    inputs: OfferedBlocks,
     spare: &mut Vec<Arc<Offer>>,
 ) -> Option<(Arc<Offer>, Option<Filled>)> {
     let helper = helper()?;
@@ -257,8 +293,9 @@ pub(crate) fn offer(
         reads,
         points,
         places,
-        filled,
-        inputs: std::mem::replace(inputs, fresh),
+        filled: inputs.filled,
+        inputs: std::mem::replace(inputs.halves, fresh),
+        blocks: inputs.blocks,
     };
     let offer = publish(job, offer);
     if !job.queued.swap(true, Ordering::SeqCst) {
@@ -271,15 +308,19 @@ pub(crate) fn offer(
     Some((offer, reused_filled))
 }
 
-/// Makes `offer` the job's next batch, every chunk offered.
+/// Makes `offer` the job's next batch, every chunk that holds vertices offered (the others
+/// left to the application's thread, which has nothing to do with them).
 fn publish(job: &Job, offer: Offer) -> Arc<Offer> {
     let seq = offer.seq;
     let offer = Arc::new(offer);
     let slot = job.slot(seq);
-    for chunk in &slot.chunks {
-        chunk
-            .state
-            .store(state(seq, Phase::Offered), Ordering::Relaxed);
+    for (index, chunk) in slot.chunks.iter().enumerate() {
+        let phase = if index < offer.chunks() {
+            Phase::Offered
+        } else {
+            Phase::Application
+        };
+        chunk.state.store(state(seq, phase), Ordering::Relaxed);
     }
     *lock(&slot.offer) = Some(offer.clone());
     job.offered.store(seq, Ordering::SeqCst);
@@ -320,8 +361,9 @@ pub(crate) fn collect(
     let mut lit_by_helper = 0;
     let mut in_time = true;
     // The chunks from `back` on are this thread's, lit in their place in `scratch`.
-    let mut back = CHUNKS;
-    for (index, chunk) in slot.chunks.iter().enumerate() {
+    let mut back = offer.chunks();
+    for (index, chunk) in slot.chunks.iter().enumerate().take(offer.chunks()) {
+        let blocks = offer.blocks_in(index);
         let taken_from_last = |back: &mut usize, scratch: &mut [OutputBlock]| {
             let last = *back - 1;
             let taken = last > index
@@ -359,21 +401,22 @@ pub(crate) fn collect(
                 if offer.points.is_some() {
                     stream(Lit::Points(&lock(&chunk.points)))
                 } else {
-                    stream(Lit::Blocks(&lock(&chunk.outputs)[..]))
+                    stream(Lit::Blocks(&lock(&chunk.outputs)[..blocks]))
                 }
             }
             Claim::Here { late } => {
                 in_time &= !late;
                 let outputs = &mut scratch[blocks_of(index)];
                 offer.light(index, outputs);
-                stream(Lit::Blocks(outputs))
+                stream(Lit::Blocks(&outputs[..blocks]))
             }
-            Claim::Taken => stream(Lit::Blocks(&scratch[blocks_of(index)])),
+            Claim::Taken => stream(Lit::Blocks(&scratch[blocks_of(index)][..blocks])),
         };
         if let (Some(_), Ok(written)) = (offer.places, u32::try_from(written)) {
-            let next = chunk_number(offer.seq, index + 1);
-            job.frontier
-                .store(frontier(next, written), Ordering::Release);
+            job.frontier.store(
+                frontier(offer.next_chunk(index), written),
+                Ordering::Release,
+            );
         }
     }
     offers.helped(in_time && lit_by_helper > 0);
@@ -540,7 +583,7 @@ fn run() {
 /// their points where it can).
 fn light_chunks(job: &Job, offer: &Offer, scratch: &mut Box<[OutputBlock; CHUNK_BLOCKS]>) {
     let seq = offer.seq;
-    for (index, chunk) in job.slot(seq).chunks.iter().enumerate() {
+    for (index, chunk) in job.slot(seq).chunks.iter().enumerate().take(offer.chunks()) {
         let claimed = chunk.state.compare_exchange(
             state(seq, Phase::Offered),
             state(seq, Phase::Helper),
@@ -551,16 +594,16 @@ fn light_chunks(job: &Job, offer: &Offer, scratch: &mut Box<[OutputBlock; CHUNK_
             // The application's thread took it.
             continue;
         }
-        offer.light(index, &mut scratch[..]);
+        let blocks = offer.light(index, &mut scratch[..]);
         match &offer.points {
             Some(sink) => {
                 let mut points = lock(&chunk.points);
-                sink.clear(&mut points, CHUNK_BLOCKS);
-                for block in scratch.iter() {
+                sink.clear(&mut points, blocks);
+                for block in &scratch[..blocks] {
                     sink.lay_out(block, &mut points);
                 }
                 if let Some(places) = &offer.places
-                    && place(job, seq, index, places, points.values())
+                    && place(job, offer, index, places, points.values())
                 {
                     continue;
                 }
@@ -578,10 +621,17 @@ fn light_chunks(job: &Job, offer: &Offer, scratch: &mut Box<[OutputBlock; CHUNK_
     }
 }
 
-/// Writes `values`, the points of chunk `index` of batch `seq` (claimed by the helper), in
-/// their place in `places` if the frontier has reached the chunk and they fit; whether it did.
+/// Writes `values`, the points of chunk `index` of `offer` (claimed by the helper), in their
+/// place in `places` if the frontier reaches the chunk and they fit; whether it did.
 #[allow(unsafe_code)]
-fn place(job: &Job, seq: u64, index: usize, places: &ApplicationPlaces, values: &[f32]) -> bool {
+fn place(
+    job: &Job,
+    offer: &Offer,
+    index: usize,
+    places: &ApplicationPlaces,
+    values: &[f32],
+) -> bool {
+    let seq = offer.seq;
     let number = chunk_number(seq, index);
     let Some(now) = frontier_at(job, number) else {
         return false;
@@ -610,7 +660,7 @@ fn place(job: &Job, seq: u64, index: usize, places: &ApplicationPlaces, values: 
     unsafe { places.write(start, values) };
     chunk.placed_end.store(end, Ordering::Relaxed);
     job.frontier.store(
-        frontier(number.wrapping_add(1), end_value),
+        frontier(offer.next_chunk(index), end_value),
         Ordering::Release,
     );
     chunk
@@ -698,6 +748,7 @@ mod tests {
             places: None,
             filled: None,
             inputs: inputs(),
+            blocks: 2 * HALF_BLOCKS,
         };
         publish(job, offer)
     }
@@ -831,6 +882,17 @@ mod tests {
     /// collecting thread only counts them.
     #[test]
     fn placed_points_are_where_one_thread_lays_them_out() {
+        placed_points_with_blocks(2 * HALF_BLOCKS, crate::lighting::lanes::LANES);
+    }
+
+    /// The same for a primitive's last batch, whose blocks end before the batch's (in the
+    /// middle of a chunk, the last block partly filled).
+    #[test]
+    fn placed_points_of_a_last_batch_are_where_one_thread_lays_them_out() {
+        placed_points_with_blocks(2 * CHUNK_BLOCKS + 5, 3);
+    }
+
+    fn placed_points_with_blocks(blocks: usize, last_len: usize) {
         use crate::gl::*;
         const UNWRITTEN: f32 = -7.0;
         const START: usize = 5;
@@ -855,15 +917,21 @@ mod tests {
                 points: Some(Arc::new(sink.clone())),
                 places: Some(places),
                 filled: None,
-                inputs: inputs(),
+                inputs: {
+                    let mut inputs = inputs();
+                    inputs[(blocks - 1) / HALF_BLOCKS][(blocks - 1) % HALF_BLOCKS].len = last_len;
+                    inputs
+                },
+                blocks,
             },
         );
         // One thread's values, the whole batch laid out at once.
         let mut expected = LaidOutPoints::default();
-        sink.clear(&mut expected, 2 * HALF_BLOCKS);
-        for inputs in &offer.inputs {
-            let mut outputs = vec![OutputBlock::default(); HALF_BLOCKS];
-            process_blocks(&derived, offer.reads, &inputs[..], &mut outputs);
+        sink.clear(&mut expected, blocks);
+        for (half, inputs) in offer.inputs.iter().enumerate() {
+            let used = blocks.saturating_sub(half * HALF_BLOCKS).min(HALF_BLOCKS);
+            let mut outputs = vec![OutputBlock::default(); used];
+            process_blocks(&derived, offer.reads, &inputs[..used], &mut outputs);
             outputs
                 .iter()
                 .for_each(|block| sink.lay_out(block, &mut expected));
