@@ -265,15 +265,15 @@ impl Offers {
     }
 }
 
-/// Offers `inputs`' blocks (full but for the last, holding its `filled`) to the helper thread, to light with
+/// Offers `inputs`' blocks (full but for the last) to the helper thread, to light with
 /// `derived` for what `reads` says (and lay out into `points`, if given, and place them in
 /// the application's memory, if given too, where the frontier says: `Job::begin_places`
-/// before the first batch in flight); `inputs` gets the blocks of a batch of `spare`,
+/// before the first batch in flight); `inputs.halves` gets the blocks of a batch of `spare`,
 /// collected before (or new blocks, if the helper still holds them all) in exchange, to fill
 /// again. The job's batches offered before and not collected must be fewer than `RING`.
 /// Returns the offer, and what the blocks given in exchange hold (`None`: new blocks).
-/// `None` when there is no helper (it could not be started): nothing is offered, `inputs` is
-/// unchanged.
+/// `None` when there is no helper (it could not be started): nothing is offered, the halves
+/// are unchanged.
 pub(crate) fn offer(
     job: &Arc<Job>,
     derived: &Arc<DerivedState>,
