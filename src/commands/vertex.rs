@@ -518,12 +518,11 @@ impl Context {
     /// ```
     pub fn end(&mut self) -> GlResult {
         let mut primitive = self.primitive.take().ok_or(GlError::InvalidOperation)?;
-        let carried = self.leave_in_flight(&mut primitive);
-        self.primitive = Some(primitive);
-        if !carried {
+        if !self.leave_in_flight(&mut primitive) {
+            self.primitive = Some(primitive);
             self.flush_vertices();
+            primitive = self.primitive.take().ok_or(GlError::InvalidOperation)?;
         }
-        let primitive = self.primitive.take().ok_or(GlError::InvalidOperation)?;
         let PrimitiveInProgress {
             mut pending,
             stream,
