@@ -602,13 +602,8 @@ impl Context {
             return;
         };
         self.stream_in_flight(&mut primitive, 0);
-        let partial = primitive.filling < primitive.batch
-            && primitive.pending.block(primitive.filling).len > 0;
-        let used = primitive.filling + usize::from(partial);
-        primitive.vertices += (primitive.filling * LANES) as u64;
-        if partial {
-            primitive.vertices += primitive.pending.block(primitive.filling).len as u64;
-        }
+        let (used, vertices) = primitive.pending_vertices();
+        primitive.vertices += vertices as u64;
         if used > 0 {
             // Lit with the context's derived state borrowed, not shared: an `Arc` clone and
             // drop per batch are two atomic operations, which some hosts make slow.
@@ -636,8 +631,7 @@ impl Context {
         let Some(mut primitive) = self.primitive.take() else {
             return;
         };
-        let batch = primitive.batch;
-        if self.offer_blocks(&mut primitive, batch) {
+        if self.offer_pending(&mut primitive) {
             self.stream_in_flight(&mut primitive, helper::RING - 1);
             self.primitive = Some(primitive);
             return;
@@ -654,15 +648,13 @@ impl Context {
         if !primitive.may_carry() {
             return false;
         }
-        let partial = primitive.pending.block(primitive.filling).len > 0;
-        let used = primitive.filling + usize::from(partial);
-        used == 0 || self.offer_blocks(primitive, used)
+        primitive.pending_vertices().0 == 0 || self.offer_pending(primitive)
     }
 
-    /// Offers the first `blocks` pending blocks (full but for the last) of a primitive whose
-    /// batches are shared to the helper thread, when there is one and it has helped of late;
-    /// the primitive then fills blocks of a batch collected before. Whether it did.
-    fn offer_blocks(&mut self, primitive: &mut PrimitiveInProgress, blocks: usize) -> bool {
+    /// Offers the pending blocks that hold vertices (full but for the last) of a primitive
+    /// whose batches are shared to the helper thread, when there is one and it has helped of
+    /// late; the primitive then fills blocks of a batch collected before. Whether it did.
+    fn offer_pending(&mut self, primitive: &mut PrimitiveInProgress) -> bool {
         if primitive.batch != 2 * HALF_BLOCKS
             || crate::threads::thread_count() < 2
             || !primitive.pending.offers.offer_now()
@@ -672,7 +664,7 @@ impl Context {
         // Room for one more batch in flight (a primitive may begin with its predecessor's
         // last two).
         self.stream_in_flight(primitive, helper::RING - 1);
-        let vertices = (blocks - 1) * LANES + primitive.pending.block(blocks - 1).len;
+        let (blocks, vertices) = primitive.pending_vertices();
         let derived = self.shared_derived();
         let pending = &mut primitive.pending;
         let job = pending.job.get_or_insert_with(helper::Job::new);
@@ -759,10 +751,7 @@ impl Context {
                 match lit {
                     helper::Lit::Blocks(blocks) => match (&sink, stream.as_deref_mut()) {
                         (Some(sink), _) => {
-                            sink.clear(laid_out, blocks.len());
-                            for block in blocks {
-                                sink.lay_out(block, laid_out);
-                            }
+                            sink.lay_out_blocks(blocks, laid_out);
                             self.append_points(laid_out);
                         }
                         (None, Some(stream)) => {
@@ -770,8 +759,8 @@ impl Context {
                                 self.stream_lit_block(stream, block);
                             }
                         }
-                        // Only batches of points outlive their primitive.
-                        (None, None) => {}
+                        // Only batches of points outlive their primitive (`may_carry`).
+                        (None, None) => debug_assert!(false, "a batch of points without its sink"),
                     },
                     helper::Lit::Points(points) => self.append_points(points),
                     helper::Lit::Placed { end } => self.feedback.placed(end),
@@ -786,6 +775,20 @@ impl Context {
 }
 
 impl PrimitiveInProgress {
+    /// How many pending blocks hold vertices (the one being filled among them, if it has
+    /// any), and how many vertices they hold.
+    fn pending_vertices(&mut self) -> (usize, usize) {
+        let partial = if self.filling < self.batch {
+            self.pending.block(self.filling).len
+        } else {
+            0
+        };
+        (
+            self.filling + usize::from(partial > 0),
+            self.filling * LANES + partial,
+        )
+    }
+
     /// Whether glEnd may leave the primitive's batches in flight (its last blocks offered
     /// with them: `Context::leave_in_flight`), for the next command to collect
     /// (`Context::collect_carried`) or the next primitive to stream before its own, while

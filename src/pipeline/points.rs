@@ -183,6 +183,14 @@ impl PointsSink {
         }
     }
 
+    /// `out` emptied, then the drawn points of `blocks` laid out in it.
+    pub(crate) fn lay_out_blocks(&self, blocks: &[OutputBlock], out: &mut LaidOutPoints) {
+        self.clear(out, blocks.len());
+        for block in blocks {
+            self.lay_out(block, out);
+        }
+    }
+
     /// Appends the drawn points of `block` (front colors) to `out`: the same values, in the
     /// same order, as `Context::feedback_points`.
     pub(crate) fn lay_out(&self, block: &OutputBlock, out: &mut LaidOutPoints) {

@@ -598,10 +598,7 @@ fn light_chunks(job: &Job, offer: &Offer, scratch: &mut Box<[OutputBlock; CHUNK_
         match &offer.points {
             Some(sink) => {
                 let mut points = lock(&chunk.points);
-                sink.clear(&mut points, blocks);
-                for block in &scratch[..blocks] {
-                    sink.lay_out(block, &mut points);
-                }
+                sink.lay_out_blocks(&scratch[..blocks], &mut points);
                 if let Some(places) = &offer.places
                     && place(job, offer, index, places, points.values())
                 {
