@@ -22,9 +22,12 @@ const STREAMING_MIN: usize = 1024;
 /// streaming against 9.7 with memcpy, and the 1000x1000 mesh on two threads took 0.925 of
 /// the time (7 of 7 alternating pairs faster); immediate mode's chunks of 2048 points
 /// (64 KiB), streamed too, took 1.058 of the time there, and so stay with `streaming_pays`.
+/// Not measured on the Cascade Lake Xeon of `streaming_pays`, where one core streamed
+/// slower than it wrote with plain stores.
 const STREAMING_ALWAYS: usize = 128 * 1024;
 
-/// Whether non-temporal stores copy faster than plain ones on this CPU: on AMD's (and
+/// Whether non-temporal stores copy faster than plain ones on this CPU, for copies shorter
+/// than `STREAMING_ALWAYS` and the pieces of `copy_streaming_piece`: on AMD's (and
 /// Hygon's), whose streaming stores write at the memory's speed (an EPYC, arrays 1 light on 2
 /// threads: 6.9 -> 6.2 ns/vertex with them); not elsewhere, as measured on Intel's server
 /// cores, where one core's streaming stores are slower than plain stores with their reads (a
