@@ -5,12 +5,12 @@
 
 use glam::{Mat4, Vec4};
 
-use super::with_context;
+use super::{bulk_lanes, with_context};
 use crate::commands::capture::{BulkLayout, FloatLayout};
 use crate::error::{GlError, GlResult};
 use crate::gl::*;
 use crate::lighting::batch::{Faces, Reads};
-use crate::lighting::lanes::LANES;
+use crate::lighting::lanes::{LANES, LanesF32};
 use crate::pipeline::block::{Lanes4, OutputBlock};
 use crate::pipeline::capture::CapturedPrimitive;
 use crate::pipeline::fetch::read_floats;
@@ -323,34 +323,15 @@ pub unsafe extern "C" fn fflLightVertices(
             count,
             reads,
             |first, block| {
-                let len = block.len;
-                let ahead = first + PREFETCH_AHEAD;
-                read_floats(
-                    positions,
-                    (layout.positions.size, layout.positions.stride),
-                    first,
-                    len,
-                    &mut block.position,
-                );
+                let (len, ahead) = (block.len, first + PREFETCH_AHEAD);
+                read_bulk(positions, layout.positions, first, len, &mut block.position);
                 prefetch_block(positions.as_ptr(), layout.positions, count, ahead);
                 if let Some(normals) = normals {
-                    read_floats(
-                        normals,
-                        (layout.normals.size, layout.normals.stride),
-                        first,
-                        len,
-                        &mut block.normal,
-                    );
+                    read_bulk(normals, layout.normals, first, len, &mut block.normal);
                     prefetch_block(normals.as_ptr(), layout.normals, count, ahead);
                 }
                 if let Some(colors) = colors {
-                    read_floats(
-                        colors,
-                        (layout.colors.size, layout.colors.stride),
-                        first,
-                        len,
-                        &mut block.color,
-                    );
+                    read_bulk(colors, layout.colors, first, len, &mut block.color);
                     prefetch_block(colors.as_ptr(), layout.colors, count, ahead);
                 }
             },
@@ -359,6 +340,21 @@ pub unsafe extern "C" fn fflLightVertices(
             |first, block| unsafe { outputs.write(first, block) },
         )
     })
+}
+
+/// Elements `first..first + len` of the array `bytes` laid out as `layout` into `lanes`
+/// (`read_floats`), a full block of packed 3-float elements by `bulk_lanes` where the CPU
+/// can.
+#[inline(always)]
+fn read_bulk(bytes: &[u8], layout: FloatLayout, first: usize, len: usize, lanes: &mut [LanesF32]) {
+    let packed3 = len == LANES && layout.size == 3 && layout.stride == 12;
+    let read = packed3
+        && bytes
+            .get(12 * first..)
+            .is_some_and(|run| bulk_lanes::read_packed3(run, lanes));
+    if !read {
+        read_floats(bytes, (layout.size, layout.stride), first, len, lanes);
+    }
 }
 
 /// How many vertices ahead of the block it reads or writes the bulk call prefetches: the
@@ -468,7 +464,11 @@ impl BulkOutputs {
             unsafe {
                 let out = output.pointer.byte_add(layout.offset(first));
                 match (block.len, layout.stride) {
-                    (LANES, 16) => write_transposed(out, 16, lanes, LANES),
+                    (LANES, 16) => {
+                        if !bulk_lanes::write_packed4(out, lanes) {
+                            write_transposed(out, 16, lanes, LANES)
+                        }
+                    }
                     (LANES, stride) => write_transposed(out, stride, lanes, LANES),
                     (len, stride) => write_transposed(out, stride, lanes, len),
                 }

@@ -8,6 +8,7 @@
 mod arrays;
 mod attribs;
 mod buffers;
+mod bulk_lanes;
 mod capture;
 mod context;
 mod feedback;
