@@ -95,16 +95,6 @@ impl V3 {
         }
     }
 
-    /// `self + weight * color`.
-    #[inline(always)]
-    fn add_weighted(self, weight: F, color: [f32; 3]) -> V3 {
-        V3 {
-            x: weight.mul_add(F::splat(color[0]), self.x),
-            y: weight.mul_add(F::splat(color[1]), self.y),
-            z: weight.mul_add(F::splat(color[2]), self.z),
-        }
-    }
-
     #[inline(always)]
     fn mul(self, o: V3) -> V3 {
         V3 {
@@ -113,6 +103,30 @@ impl V3 {
             z: self.z * o.z,
         }
     }
+}
+
+with_features! {
+/// `V3::splat` of constants in memory (`F::broadcast`).
+#[inline]
+fn broadcast3(v: &[f32; 3]) -> V3 {
+    V3 {
+        x: F::broadcast(&v[0]),
+        y: F::broadcast(&v[1]),
+        z: F::broadcast(&v[2]),
+    }
+}
+}
+
+with_features! {
+/// `sum + weight * color`.
+#[inline]
+fn add_weighted(sum: V3, weight: F, color: &[f32; 3]) -> V3 {
+    V3 {
+        x: weight.mul_add(F::broadcast(&color[0]), sum.x),
+        y: weight.mul_add(F::broadcast(&color[1]), sum.y),
+        z: weight.mul_add(F::broadcast(&color[2]), sum.z),
+    }
+}
 }
 
 impl Add for V3 {
@@ -506,17 +520,17 @@ fn add_light<
 ) {
     let one = F::splat(1.0);
     let (to_light, attenuation) = if POSITIONAL {
-        let offset = V3::splat(light.position) - vertex.position;
+        let offset = broadcast3(&light.position) - vertex.position;
         let distance_squared = offset.dot(offset);
         let inverse_distance = reciprocal_sqrt(distance_squared);
         let distance = distance_squared * inverse_distance;
         // The direction carries the positions' rounding divided by the distance.
-        let conditioning = vertex.conditioning + F::splat(light.conditioning);
+        let conditioning = vertex.conditioning + F::broadcast(&light.conditioning);
         sums.refused = sums.refused | distance.lt(conditioning.max(F::splat(1e-6)));
         let to_light = offset.scale(inverse_distance);
         let attenuation = if ATTENUATION {
-            let [k0, k1, k2] = light.attenuation_factors;
-            let denominator = distance.mul_add(distance.mul_add(F::splat(k2), F::splat(k1)), F::splat(k0));
+            let [k0, k1, k2] = &light.attenuation_factors;
+            let denominator = distance.mul_add(distance.mul_add(F::broadcast(k2), F::broadcast(k1)), F::broadcast(k0));
             if light.checks_attenuation {
                 sums.refused = sums.refused | denominator.lt(F::splat(1.0 / 1024.0));
             }
@@ -526,16 +540,16 @@ fn add_light<
         };
         (to_light, attenuation)
     } else {
-        (V3::splat(light.position), None)
+        (broadcast3(&light.position), None)
     };
     // The spot factor and its slope over the exponent, 0 outside the cone.
     let spot = if SPOT {
-        let cos_angle = to_light.dot(V3::splat(light.spot_axis_to_light));
-        let cutoff = F::splat(light.spot_cos_cutoff);
+        let cos_angle = to_light.dot(broadcast3(&light.spot_axis_to_light));
+        let cutoff = F::broadcast(&light.spot_cos_cutoff);
         sums.refused = sums.refused | (cos_angle - cutoff).abs().lt(F::splat(DISCONTINUITY));
         let inside = cos_angle.ge(cutoff);
         // Where the normal is longer than 1, the terms the spot factor weighs are not bounded.
-        let small = cos_angle.lt(F::splat(light.smallest_spot_base)) & !vertex.long_normal;
+        let small = cos_angle.lt(F::broadcast(&light.smallest_spot_base)) & !vertex.long_normal;
         let (below, power) = power_and_below(cos_angle.max(F::zero()), light.spot_exponent, small);
         let below = match attenuation {
             Some(a) => inside.keep_product(a, below),
@@ -558,7 +572,7 @@ fn add_light<
         (None, None) => one,
     };
     if light.has_ambient {
-        sums.ambient = sums.ambient.add_weighted(weight, light.ambient);
+        sums.ambient = add_weighted(sums.ambient, weight, &light.ambient);
     }
 
     let normal = vertex.normal;
@@ -569,11 +583,11 @@ fn add_light<
         sums.refused = sums.refused | length_squared.lt(F::splat(SHORTEST_HALF_SQUARED));
         normal.dot(half) * reciprocal_sqrt(length_squared)
     } else {
-        normal.dot(V3::splat(light.infinite_half))
+        normal.dot(broadcast3(&light.infinite_half))
     };
     // Whether the specular term counts changes at n·L = 0.
     sums.refused = sums.refused | n_dot_l.abs().lt(F::splat(DISCONTINUITY));
-    sums.sensitivity = weight.mul_add(F::splat(light.term_bounds[1]), sums.sensitivity);
+    sums.sensitivity = weight.mul_add(F::broadcast(&light.term_bounds[1]), sums.sensitivity);
     let face_count = if TWO_SIDE { 2 } else { 1 };
     // The faces see n·h and -n·h, of which one at most is positive: with one shininess
     // (and a power of 0 that is 0), one power of |n·h| serves both.
@@ -600,15 +614,15 @@ fn add_light<
         let ((below, power), counts) = match shared {
             Some(powers) => (powers, lit & n_dot_h.gt(F::zero())),
             None => {
-                let small = n_dot_h.lt(F::splat(light.smallest_specular_base[face]));
+                let small = n_dot_h.lt(F::broadcast(&light.smallest_specular_base[face]));
                 (power_and_below(n_dot_h.max(F::zero()), fast.shininess, small), lit)
             }
         };
         let power = counts.keep(power);
-        sums.diffuse[face] = sums.diffuse[face].add_weighted(weight * diffuse, light.diffuse);
-        sums.specular[face] = sums.specular[face].add_weighted(weight * power, light.specular);
+        sums.diffuse[face] = add_weighted(sums.diffuse[face], weight * diffuse, &light.diffuse);
+        sums.specular[face] = add_weighted(sums.specular[face], weight * power, &light.specular);
         sums.specular_sensitivity[face] = counts.keep_product(weight, below).mul_add(
-            F::splat(light.specular_sensitivity[face]),
+            F::broadcast(&light.specular_sensitivity[face]),
             sums.specular_sensitivity[face],
         );
         if SPOT {
@@ -616,10 +630,10 @@ fn add_light<
         }
     }
     if let Some(below) = spot_below {
-        let [ambient, diffuse, specular] = light.spot_term_bounds;
-        let terms = F::splat(diffuse).mul_add(
+        let [ambient, diffuse, specular] = &light.spot_term_bounds;
+        let terms = F::broadcast(diffuse).mul_add(
             n_dot_l.abs(),
-            F::splat(specular).mul_add(largest_power, F::splat(ambient)),
+            F::broadcast(specular).mul_add(largest_power, F::broadcast(ambient)),
         );
         sums.sensitivity = below.mul_add(terms, sums.sensitivity);
     }

@@ -76,6 +76,23 @@ impl F {
         F(unsafe { _mm256_set1_ps(value) })
     }
 
+    /// `*value` in every lane, broadcast from memory (see the wide type's).
+    #[target_feature(enable = "avx")]
+    #[inline]
+    pub(super) fn broadcast(value: &f32) -> F {
+        let lanes: __m256;
+        // SAFETY: reads the 4 bytes of `value`.
+        unsafe {
+            std::arch::asm!(
+                "vbroadcastss {lanes}, dword ptr [{value}]",
+                lanes = out(ymm_reg) lanes,
+                value = in(reg) value,
+                options(pure, readonly, nostack, preserves_flags),
+            )
+        };
+        F(lanes)
+    }
+
     #[inline(always)]
     pub(super) fn zero() -> F {
         F(unsafe { _mm256_setzero_ps() })

@@ -89,6 +89,25 @@ impl F {
         F(unsafe { _mm512_set1_ps(value) })
     }
 
+    /// `*value` in every lane, broadcast from memory by the load unit: the compiler would
+    /// otherwise load a light's neighboring constants together and spread each with shuffles,
+    /// on the port that the arithmetic needs.
+    #[target_feature(enable = "avx512f")]
+    #[inline]
+    pub(super) fn broadcast(value: &f32) -> F {
+        let lanes: __m512;
+        // SAFETY: reads the 4 bytes of `value`.
+        unsafe {
+            std::arch::asm!(
+                "vbroadcastss {lanes}, dword ptr [{value}]",
+                lanes = out(zmm_reg) lanes,
+                value = in(reg) value,
+                options(pure, readonly, nostack, preserves_flags),
+            )
+        };
+        F(lanes)
+    }
+
     #[inline(always)]
     pub(super) fn zero() -> F {
         F(unsafe { _mm512_setzero_ps() })
