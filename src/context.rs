@@ -109,6 +109,8 @@ pub struct Context {
     /// is rewritten for each block).
     pub(crate) lit_blocks:
         Option<Box<[crate::pipeline::block::OutputBlock; crate::pipeline::STREAMED_BLOCKS]>>,
+    /// The value buffers of a draw of points on several threads, for the next such draw.
+    pub(crate) point_buffers: crate::pipeline::points::PointBuffers,
     pub(crate) arrays: crate::state::arrays::VertexArrays,
     pub(crate) buffers: crate::state::buffers::BufferObjects,
     pub(crate) queries: crate::state::queries::QueryObjects,
@@ -183,6 +185,7 @@ impl Context {
             primitive: None,
             spare_pending: None,
             lit_blocks: None,
+            point_buffers: Default::default(),
             arrays: Default::default(),
             buffers: Default::default(),
             queries: Default::default(),

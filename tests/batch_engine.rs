@@ -795,3 +795,52 @@ fn threaded_points_equal_one_thread() {
         }
     }
 }
+
+/// A context keeps the value buffers of a large draw of points on several threads for its
+/// next (`pipeline::points::PointBuffers`): draws after the first, whose buffers still hold
+/// the first's values, of other feedback layouts and of fewer points, give what a new
+/// context gives, token for token.
+#[test]
+fn threaded_points_reuse_their_buffers_across_draws() {
+    use fflight::commands::arrays::{ArraySources, ElementIndices};
+    use fflight::state::arrays::ArrayKind;
+    let mut rng = Rng(48);
+    let base = random_state(&mut rng);
+    let count = 3 * fflight::threads::MIN_VERTICES_PER_THREAD + 321;
+    let bytes = random_arrays(&mut rng, count);
+    let sources = ArraySources::new(0)
+        .with(ArrayKind::Vertex, &bytes)
+        .with(ArrayKind::Normal, &bytes);
+    let draw = |ctx: &mut Context, layout: GLenum, points: usize| {
+        ctx.feedback_buffer(i32::MAX, layout, 1).unwrap();
+        ctx.render_mode(GL_FEEDBACK).unwrap();
+        let all = ElementIndices::Sequential {
+            first: 0,
+            count: points,
+        };
+        ctx.draw_arrays_from(GL_POINTS, &sources, &all).unwrap();
+        let (written, finished) = ctx.render_mode(GL_RENDER).unwrap();
+        let values: Vec<u32> = finished
+            .unwrap()
+            .values
+            .iter()
+            .map(|v| v.to_bits())
+            .collect();
+        (written, values)
+    };
+    fflight::threads::set_threads(2).unwrap();
+    let mut reused = with_arrays(&base);
+    let draws = [
+        (GL_4D_COLOR_TEXTURE, count),
+        (GL_2D, count),
+        (GL_3D_COLOR, count - 2000),
+        (GL_4D_COLOR_TEXTURE, count),
+    ];
+    for (k, (layout, points)) in draws.into_iter().enumerate() {
+        let got = draw(&mut reused, layout, points);
+        let want = draw(&mut with_arrays(&base), layout, points);
+        assert!(got.0 > 10_000, "draw {k}: {} values", got.0);
+        assert!(got == want, "draw {k}: layout {layout:#x}, {points} points");
+    }
+    fflight::threads::set_threads(0).unwrap();
+}

@@ -20,7 +20,7 @@ use crate::lighting::batch::{Reads, process_blocks};
 const CHUNK_BLOCKS: usize = 256;
 
 /// Chunk buffers per thread: one being lit while another waits to be streamed.
-const BUFFERS_PER_THREAD: usize = 2;
+pub(crate) const BUFFERS_PER_THREAD: usize = 2;
 
 /// A chunk's input blocks (kept between the chunks an output serves: `fill` leaves in them
 /// what it does not set) and its lit blocks.
