@@ -455,6 +455,33 @@ fn threaded_draws_equal_one_thread() {
     unsafe { fflSetThreads(0) };
 }
 
+/// The context keeps a large draw's chunk outputs and helper caches for its next
+/// (`pipeline::mesh::MeshThreads`): draws after the first, into whose outputs the first wrote,
+/// of more chunks than outputs (so that kept ones are filled again) and in other feedback
+/// types, give the one-thread result bit for bit.
+#[test]
+fn threaded_draws_reuse_their_buffers() {
+    set_lit_state();
+    // 300 x 150 vertices: about 89,000 triangles, six chunks (of 16384).
+    let m = mesh(300, 150, 150, 500);
+    set_arrays(&m);
+    let draw = || draw_elements(&m.indices);
+    let size = m.indices.len() * 40;
+    apply(configs()[5]);
+    let run = |threads: i32| {
+        unsafe { fflSetThreads(threads) };
+        [GL_3D_COLOR, GL_4D_COLOR_TEXTURE, GL_3D_COLOR, GL_2D]
+            .map(|kind| feedback(kind, size, false, &draw))
+    };
+    let one = run(1);
+    let many = run(2);
+    unsafe { fflSetThreads(0) };
+    for (k, (many, one)) in many.iter().zip(&one).enumerate() {
+        assert!(one.0 > 0, "draw {k}");
+        assert_same(many, one, format_args!("draw {k}, 2 threads"));
+    }
+}
+
 /// Large glDrawArrays(GL_POINTS) into the application's feedback buffer, split into chunks
 /// that the threads lay out and copy into their places (`pipeline::points`): the one-thread
 /// buffer bit for bit, canaries past the count included, in every feedback layout, with

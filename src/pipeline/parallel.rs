@@ -55,10 +55,12 @@ impl<C> FreeChunks<C> {
         }
     }
 
-    /// Ends the draw (also when the calling thread unwinds): helpers stop waiting.
-    fn close(&self) {
-        *self.chunks.lock().unwrap_or_else(|e| e.into_inner()) = None;
+    /// Ends the draw (also when the calling thread unwinds): helpers stop waiting. Returns
+    /// the buffers that were free.
+    fn close(&self) -> Vec<C> {
+        let free = self.chunks.lock().unwrap_or_else(|e| e.into_inner()).take();
         self.returned.notify_all();
+        free.unwrap_or_default()
     }
 }
 
@@ -172,14 +174,15 @@ pub(crate) enum Step<'a, T> {
 /// order of job: `main(Step::Take(output))` for a job a helper ran, `main(Step::Run(k))` when
 /// the next job is still unclaimed (then the calling thread runs it). While the next job is
 /// being run elsewhere, the calling thread runs later ones into outputs too. A fixed set of
-/// outputs (two per thread) bounds how far the helpers run ahead.
+/// outputs (two per thread) bounds how far the helpers run ahead. Returns the outputs given
+/// back by the end (all but those of helpers that found no job left), for a next draw.
 pub(crate) fn in_order<T: Send>(
     jobs: usize,
     helpers: usize,
     make: impl Fn() -> T + Sync,
     run: impl Fn(usize, &mut T) + Sync,
     mut main: impl FnMut(Step<T>),
-) {
+) -> Vec<T> {
     let free = FreeChunks {
         chunks: Mutex::new(Some(
             (0..BUFFERS_PER_THREAD * (helpers + 1))
@@ -246,5 +249,6 @@ pub(crate) fn in_order<T: Send>(
                 free.put(output);
             }
         }
-    });
+        free.close()
+    })
 }

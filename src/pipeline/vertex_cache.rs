@@ -41,6 +41,8 @@ pub struct VertexCache {
     outputs: Vec<OutputBlock>,
     /// The cache of indexed separate triangles in feedback and selection.
     pub(crate) mesh: super::mesh::MeshCache,
+    /// What a large mesh draw on several threads keeps for the next.
+    pub(crate) mesh_threads: super::mesh::MeshThreads,
     /// What the draw reads of its vertices.
     reads: Reads,
 }
