@@ -10,7 +10,11 @@
 //! glEnd), and only big ones count: a program of small primitives reads no clock, and the
 //! time between primitives (the application's own work, other draws, waiting for a frame)
 //! is not measured. The first trial shares, so that a short program (or test) sees the
-//! helper at work whatever the machine.
+//! helper at work whatever the machine. The first big primitive of a way is not counted: it
+//! pays for the change (the batches of the other way still in flight, the helper starting,
+//! waking or still watching for batches). Counted, they made the first trial of sharing take
+//! 42 ns a vertex against 12-13 after it, and each trial alone 17-25 against 14 on one thread
+//! (1 light on the model 167 Xeon): alone was kept first, then tried again every 16 trials.
 
 use std::time::{Duration, Instant};
 
@@ -63,6 +67,8 @@ pub(crate) struct SharingChoice {
     kept: u32,
     /// Whether the last primitive was big: the next one is timed.
     after_big: bool,
+    /// Whether the next big timed primitive is the first of `way`, which is not counted.
+    settling: bool,
 }
 
 impl Default for SharingChoice {
@@ -74,6 +80,7 @@ impl Default for SharingChoice {
             tried: [None; 2],
             kept: 0,
             after_big: true,
+            settling: true,
         }
     }
 }
@@ -98,6 +105,10 @@ impl SharingChoice {
         if vertices < BIG_PRIMITIVE {
             return;
         }
+        if self.settling {
+            self.settling = false;
+            return;
+        }
         self.vertices += vertices;
         self.elapsed += elapsed;
         if self.vertices < TRIAL_VERTICES {
@@ -112,22 +123,28 @@ impl SharingChoice {
                 // The next round begins with the way kept, this trial its measure.
                 self.tried = [None; 2];
                 self.tried[self.way.index()] = Some(per_vertex);
-                self.way = self.way.other();
+                self.switch(self.way.other());
             }
             return;
         }
         self.tried[self.way.index()] = Some(per_vertex);
         match self.tried {
             [Some(alone), Some(shared)] => {
-                self.way = if shared < alone {
+                self.switch(if shared < alone {
                     Way::Shared
                 } else {
                     Way::Alone
-                };
+                });
                 self.kept = KEPT_TRIALS;
             }
-            _ => self.way = self.way.other(),
+            _ => self.switch(self.way.other()),
         }
+    }
+
+    /// Lights the next primitives `way`, its first big one not counted if that is a change.
+    fn switch(&mut self, way: Way) {
+        self.settling = way != self.way;
+        self.way = way;
     }
 }
 
@@ -137,7 +154,8 @@ mod tests {
 
     /// A trial's worth of big primitives of `way`, each taking `micros` per 1024 vertices.
     fn trial(choice: &mut SharingChoice, micros: u64) {
-        for _ in 0..TRIAL_VERTICES / BIG_PRIMITIVE {
+        let settling = u64::from(choice.settling);
+        for _ in 0..TRIAL_VERTICES / BIG_PRIMITIVE + settling {
             choice.timed(Duration::from_micros(micros), BIG_PRIMITIVE);
         }
     }
@@ -162,6 +180,31 @@ mod tests {
         trial(&mut choice, 40);
         assert_eq!(choice.way, Way::Shared);
         assert_eq!(choice.kept, KEPT_TRIALS);
+    }
+
+    /// The first big primitive of each way, however slow, counts for nothing.
+    #[test]
+    fn the_first_primitive_of_a_way_is_not_counted() {
+        let mut choice = SharingChoice::default();
+        // Sharing's first primitive starts the helper: ten times slower, not counted.
+        choice.timed(Duration::from_micros(600), BIG_PRIMITIVE);
+        for _ in 0..TRIAL_VERTICES / BIG_PRIMITIVE {
+            choice.timed(Duration::from_micros(40), BIG_PRIMITIVE);
+        }
+        assert_eq!(choice.way, Way::Alone);
+        // Alone's first, slowed by the batches still shared, not counted either.
+        choice.timed(Duration::from_micros(600), BIG_PRIMITIVE);
+        for _ in 0..TRIAL_VERTICES / BIG_PRIMITIVE {
+            choice.timed(Duration::from_micros(50), BIG_PRIMITIVE);
+        }
+        assert_eq!(choice.way, Way::Shared, "sharing was faster");
+        assert_eq!(choice.kept, KEPT_TRIALS);
+        // Back to sharing: its first primitive is not counted; then every one is.
+        assert!(choice.settling);
+        choice.timed(Duration::from_micros(600), BIG_PRIMITIVE);
+        assert!(!choice.settling);
+        choice.timed(Duration::from_micros(40), BIG_PRIMITIVE);
+        assert_eq!(choice.vertices, BIG_PRIMITIVE);
     }
 
     /// In feedback mode on more than one thread, a primitive is offered to the helper in
