@@ -96,9 +96,9 @@ pub(crate) struct LaidOutPoints<'a> {
 
 /// A context's value buffers of points laid out on several threads, kept from one draw for
 /// the next: allocated anew, they were zeroed on pages the system had taken back since the
-/// last draw (1M points, 1 light, 2 threads: about 115 page faults a draw). Twice the
-/// buffers a draw of `threads` threads uses at most are kept, each a chunk's values (about
-/// 100 KiB). A copy of the context starts without them.
+/// last draw (1M points, 1 light, 2 threads: about 115 page faults a draw). At most the
+/// buffers of the draw before are kept, two for each output it used, each a chunk's values
+/// (64 KiB as GL_3D_COLOR, 104 KiB at most). A copy of the context starts without them.
 #[derive(Debug, Default)]
 pub(crate) struct PointBuffers(Vec<Vec<f32>>);
 
