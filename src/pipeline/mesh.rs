@@ -216,11 +216,8 @@ impl Context {
             threads - 1,
             || {
                 let kept = outputs.lock().unwrap_or_else(|e| e.into_inner()).pop();
-                let mut output: ChunkOutput = kept.unwrap_or_default();
-                output.values.clear();
-                output.clipped.clear();
-                output.hits = None;
-                output
+                // Emptied by `send_to` when the draw before took it.
+                kept.unwrap_or_default()
             },
             |k, output: &mut ChunkOutput| {
                 let mut cache = helper_caches

@@ -174,8 +174,8 @@ pub(crate) enum Step<'a, T> {
 /// order of job: `main(Step::Take(output))` for a job a helper ran, `main(Step::Run(k))` when
 /// the next job is still unclaimed (then the calling thread runs it). While the next job is
 /// being run elsewhere, the calling thread runs later ones into outputs too. A fixed set of
-/// outputs (two per thread) bounds how far the helpers run ahead. Returns the outputs given
-/// back by the end (all but those of helpers that found no job left), for a next draw.
+/// outputs (two per thread) bounds how far the helpers run ahead. Returns the outputs, for a
+/// next draw to reuse (but one a helper gives back after the last job's, which is dropped).
 pub(crate) fn in_order<T: Send>(
     jobs: usize,
     helpers: usize,
@@ -201,6 +201,8 @@ pub(crate) fn in_order<T: Send>(
                 while let Some(mut output) = free.take(true) {
                     let k = next_job.fetch_add(1, Ordering::Relaxed);
                     if k >= jobs {
+                        // Given back, for the next draw.
+                        free.put(output);
                         return;
                     }
                     run(k, &mut output);

@@ -90,8 +90,6 @@ pub(crate) struct LaidOutPoints<'a> {
     destination: Option<&'a mut [f32]>,
     /// The values of the chunk before, being copied to their place.
     delivering: Delivery<'a>,
-    /// Where its two buffers go when it is dropped (`None`: freed).
-    recycle: Option<&'a Mutex<Vec<Vec<f32>>>>,
 }
 
 /// A context's value buffers of points laid out on several threads, kept from one draw for
@@ -110,14 +108,21 @@ impl Clone for PointBuffers {
 
 impl PointBuffers {
     /// The buffers, lent to a draw (`LaidOutPoints::recycled`) while the context is borrowed
-    /// elsewhere, and given back by `keep`.
+    /// elsewhere, and taken back by `keep`.
     fn lend(&mut self) -> Mutex<Vec<Vec<f32>>> {
         Mutex::new(std::mem::take(&mut self.0))
     }
 
-    /// Keeps what a draw of `threads` threads gave back to `lent`.
-    fn keep(&mut self, lent: Mutex<Vec<Vec<f32>>>, threads: usize) {
+    /// Keeps the buffers of the outputs of a draw of `threads` threads, once they have
+    /// delivered their values, and what is left of `lent`.
+    fn keep<'a>(
+        &mut self,
+        lent: Mutex<Vec<Vec<f32>>>,
+        outputs: impl IntoIterator<Item = LaidOutPoints<'a>>,
+        threads: usize,
+    ) {
         let mut buffers = lent.into_inner().unwrap_or_else(|e| e.into_inner());
+        buffers.extend(outputs.into_iter().flat_map(LaidOutPoints::into_buffers));
         buffers.truncate(2 * (BUFFERS_PER_THREAD * threads + 1));
         self.0 = buffers;
     }
@@ -189,8 +194,8 @@ impl LaidOutPoints<'_> {
 }
 
 impl<'a> LaidOutPoints<'a> {
-    /// Empty, with buffers from `buffers` (where they go back when it is dropped).
-    pub(crate) fn recycled(buffers: &'a Mutex<Vec<Vec<f32>>>) -> LaidOutPoints<'a> {
+    /// Empty, with buffers from `buffers` (`PointBuffers::lend`).
+    fn recycled(buffers: &Mutex<Vec<Vec<f32>>>) -> LaidOutPoints<'a> {
         let mut lent = buffers.lock().unwrap_or_else(|e| e.into_inner());
         LaidOutPoints {
             values: lent.pop().unwrap_or_default(),
@@ -201,19 +206,22 @@ impl<'a> LaidOutPoints<'a> {
                 values: lent.pop().unwrap_or_default(),
                 ..Delivery::default()
             },
-            recycle: Some(buffers),
         }
+    }
+
+    /// Its two buffers, once its values are delivered.
+    fn into_buffers(mut self) -> [Vec<f32>; 2] {
+        self.deliver();
+        [
+            std::mem::take(&mut self.values),
+            std::mem::take(&mut self.delivering.values),
+        ]
     }
 }
 
 impl Drop for LaidOutPoints<'_> {
     fn drop(&mut self) {
         self.deliver();
-        if let Some(buffers) = self.recycle {
-            let mut buffers = buffers.lock().unwrap_or_else(|e| e.into_inner());
-            buffers.push(std::mem::take(&mut self.values));
-            buffers.push(std::mem::take(&mut self.delivering.values));
-        }
     }
 }
 
@@ -324,14 +332,15 @@ impl PointsDraw<'_> {
         chunks: usize,
         helpers: usize,
         mut room: &mut [f32],
-        buffers: &Mutex<Vec<Vec<f32>>>,
+        kept: &mut PointBuffers,
     ) -> (usize, bool) {
         let (mut appended, mut overflowed) = (0, false);
-        let mut own = LaidOutPoints::recycled(buffers);
-        in_order(
+        let buffers = kept.lend();
+        let mut own = LaidOutPoints::recycled(&buffers);
+        let outputs = in_order(
             chunks,
             helpers,
-            || LaidOutPoints::recycled(buffers),
+            || LaidOutPoints::recycled(&buffers),
             |k, out| self.run_into(k, out),
             |step| {
                 let out = match step {
@@ -349,6 +358,7 @@ impl PointsDraw<'_> {
                 out.destination = Some(place);
             },
         );
+        kept.keep(buffers, outputs.into_iter().chain([own]), helpers + 1);
         (appended, overflowed)
     }
 }
@@ -388,19 +398,19 @@ impl Context {
             }
             return true;
         }
-        let buffers = self.point_buffers.lend();
         let feedback = &mut self.feedback;
         if let (Some(_), FeedbackStorage::Application(memory)) =
             (draw.sink.layout, &mut feedback.storage)
         {
             let room = &mut memory.as_mut_slice()[feedback.written..feedback.capacity];
-            let (appended, overflowed) = draw.run_into_places(chunks, threads - 1, room, &buffers);
+            let (appended, overflowed) =
+                draw.run_into_places(chunks, threads - 1, room, &mut self.point_buffers);
             feedback.written += appended;
             feedback.overflowed |= overflowed;
-            self.point_buffers.keep(buffers, threads);
             return true;
         }
-        in_order(
+        let buffers = self.point_buffers.lend();
+        let outputs = in_order(
             chunks,
             threads - 1,
             || LaidOutPoints::recycled(&buffers),
@@ -413,7 +423,7 @@ impl Context {
                 Step::Take(out) => self.append_points(out),
             },
         );
-        self.point_buffers.keep(buffers, threads);
+        self.point_buffers.keep(buffers, outputs, threads);
         true
     }
 
