@@ -9,11 +9,12 @@
 use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc::channel;
-use std::sync::{Condvar, Mutex};
+use std::sync::{Condvar, Mutex, MutexGuard};
 
 use super::block::{InputBlock, OutputBlock};
 use super::vertex::DerivedState;
 use crate::lighting::batch::{Reads, process_blocks};
+use crate::threads::watch;
 
 /// Blocks per chunk: the unit of work (2048 vertices, about 230 KiB of lit blocks; large
 /// enough that handing chunks over costs little next to lighting them).
@@ -29,36 +30,77 @@ type LitChunk = (Vec<InputBlock>, Vec<OutputBlock>);
 /// The chunk buffers not in use. `None` once the draw is over, which sends waiting helpers
 /// home.
 struct FreeChunks<C> {
-    chunks: Mutex<Option<Vec<C>>>,
+    chunks: Mutex<FreeList<C>>,
     returned: Condvar,
 }
 
+struct FreeList<C> {
+    chunks: Option<Vec<C>>,
+    /// Threads asleep waiting for a buffer: `put` wakes one only when there is one, since
+    /// `Condvar::notify_one` makes a system call even when nobody waits.
+    sleeping: usize,
+}
+
 impl<C> FreeChunks<C> {
-    /// A free buffer, waiting for one if `wait`; `None` when the draw is over (or, without
-    /// `wait`, when none is free).
+    fn new(chunks: Vec<C>) -> FreeChunks<C> {
+        FreeChunks {
+            chunks: Mutex::new(FreeList {
+                chunks: Some(chunks),
+                sleeping: 0,
+            }),
+            returned: Condvar::new(),
+        }
+    }
+
+    fn lock(&self) -> MutexGuard<'_, FreeList<C>> {
+        self.chunks.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// A free buffer, `Err` if none is free; `Ok(None)` when the draw is over.
+    fn try_take(&self) -> Result<Option<C>, ()> {
+        match self.lock().chunks.as_mut() {
+            None => Ok(None),
+            Some(free) => free.pop().map(Some).ok_or(()),
+        }
+    }
+
+    /// A free buffer, waiting for one if `wait` (watching for `threads::SPIN`, then asleep);
+    /// `None` when the draw is over (or, without `wait`, when none is free).
     fn take(&self, wait: bool) -> Option<C> {
-        let mut free = self.chunks.lock().unwrap_or_else(|e| e.into_inner());
+        if !wait {
+            return self.try_take().ok().flatten();
+        }
+        if let Some(found) = watch(|| self.try_take().ok()) {
+            return found;
+        }
+        let mut free = self.lock();
         loop {
-            match free.as_mut()?.pop() {
+            match free.chunks.as_mut()?.pop() {
                 Some(chunk) => return Some(chunk),
-                None if wait => free = self.returned.wait(free).unwrap_or_else(|e| e.into_inner()),
-                None => return None,
+                None => {
+                    free.sleeping += 1;
+                    free = self.returned.wait(free).unwrap_or_else(|e| e.into_inner());
+                    free.sleeping -= 1;
+                }
             }
         }
     }
 
     fn put(&self, chunk: C) {
-        let mut free = self.chunks.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some(free) = free.as_mut() {
-            free.push(chunk);
-            self.returned.notify_one();
+        let mut free = self.lock();
+        let sleeping = free.sleeping > 0;
+        if let Some(chunks) = free.chunks.as_mut() {
+            chunks.push(chunk);
+            if sleeping {
+                self.returned.notify_one();
+            }
         }
     }
 
     /// Ends the draw (also when the calling thread unwinds): helpers stop waiting. Returns
     /// the buffers that were free.
     fn close(&self) -> Vec<C> {
-        let free = self.chunks.lock().unwrap_or_else(|e| e.into_inner()).take();
+        let free = self.lock().chunks.take();
         self.returned.notify_all();
         free.unwrap_or_default()
     }
@@ -183,14 +225,11 @@ pub(crate) fn in_order<T: Send>(
     run: impl Fn(usize, &mut T) + Sync,
     mut main: impl FnMut(Step<T>),
 ) -> Vec<T> {
-    let free = FreeChunks {
-        chunks: Mutex::new(Some(
-            (0..BUFFERS_PER_THREAD * (helpers + 1))
-                .map(|_| make())
-                .collect(),
-        )),
-        returned: Condvar::new(),
-    };
+    let free = FreeChunks::new(
+        (0..BUFFERS_PER_THREAD * (helpers + 1))
+            .map(|_| make())
+            .collect(),
+    );
     let next_job = AtomicUsize::new(0);
     std::thread::scope(|scope| {
         let _close = CloseOnDrop(&free);
@@ -240,7 +279,8 @@ pub(crate) fn in_order<T: Send>(
                     }
                     free.put(output);
                 }
-                let (k, output) = done_rx.recv().expect("a helper runs each job it claims");
+                let (k, output) = watch(|| done_rx.try_recv().ok())
+                    .unwrap_or_else(|| done_rx.recv().expect("a helper runs each job it claims"));
                 waiting.insert(k, output);
             };
             match &mut output {

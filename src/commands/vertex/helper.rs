@@ -29,7 +29,7 @@
 //! did not help with a batch, or kept the application's thread waiting, is not offered the
 //! next batches, for longer each time it happens again (up to 256 batches), so a machine
 //! with more work than cores sees one thread's speed. Between batches the helper watches
-//! for the next for `SPIN`, then sleeps until one is offered.
+//! for the next for `threads::SPIN`, then sleeps until one is offered.
 
 use std::collections::VecDeque;
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
@@ -43,6 +43,7 @@ use crate::lighting::batch::{Reads, process_blocks};
 use crate::pipeline::block::{InputBlock, OutputBlock};
 use crate::pipeline::points::{LaidOutPoints, PointsSink};
 use crate::pipeline::vertex::DerivedState;
+use crate::threads::watch;
 
 /// Blocks per chunk, what a thread lights at a time: the batch engine's own group of blocks.
 pub(crate) const CHUNK_BLOCKS: usize = 16;
@@ -521,14 +522,6 @@ struct Helper {
     thread: Thread,
 }
 
-/// How long the helper watches for the next batch before it sleeps: a primitive's next batch
-/// comes within this, and waking a sleeping thread costs the offering thread a system call
-/// and the helper tens of microseconds. It watches yielding: where more threads are runnable
-/// than cores, a thread spinning without yielding takes its share of a core from the others,
-/// the application's thread among them (immediate 8 spots, 2 cores busy with two other
-/// processes: 84-94 ns/vertex spinning, 61-68 yielding, 59-76 with one thread).
-const SPIN: Duration = Duration::from_micros(100);
-
 /// The helper, started on first use and kept for the life of the process; `None` if the
 /// thread could not be started.
 fn helper() -> Option<&'static Helper> {
@@ -689,25 +682,23 @@ fn frontier_at(job: &Job, number: u32) -> Option<u64> {
     }
 }
 
-/// Waits for a job in the mailbox: watching it for `SPIN`, then asleep until `offer` wakes
+/// Waits for a job in the mailbox: watching it for `threads::SPIN`, then asleep until `offer` wakes
 /// the thread.
 fn next_job(helper: &Helper) -> Arc<Job> {
-    let mut spinning = Instant::now();
+    let take = || {
+        if !helper.mail.load(Ordering::Acquire) {
+            return None;
+        }
+        let mut mailbox = lock(&helper.mailbox);
+        let job = mailbox.pop_front();
+        helper.mail.store(!mailbox.is_empty(), Ordering::Relaxed);
+        job
+    };
     loop {
-        if helper.mail.load(Ordering::Acquire) {
-            let mut mailbox = lock(&helper.mailbox);
-            let job = mailbox.pop_front();
-            helper.mail.store(!mailbox.is_empty(), Ordering::Relaxed);
-            if let Some(job) = job {
-                return job;
-            }
+        if let Some(job) = watch(take) {
+            return job;
         }
-        if spinning.elapsed() > SPIN {
-            std::thread::park();
-            spinning = Instant::now();
-        } else {
-            std::thread::yield_now();
-        }
+        std::thread::park();
     }
 }
 
