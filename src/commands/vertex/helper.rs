@@ -682,8 +682,8 @@ fn frontier_at(job: &Job, number: u32) -> Option<u64> {
     }
 }
 
-/// Waits for a job in the mailbox: watching it for `threads::SPIN`, then asleep until `offer` wakes
-/// the thread.
+/// Waits for a job in the mailbox: watching it for `threads::SPIN`, then asleep until
+/// `offer` wakes the thread.
 fn next_job(helper: &Helper) -> Arc<Job> {
     let take = || {
         if !helper.mail.load(Ordering::Acquire) {
