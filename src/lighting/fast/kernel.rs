@@ -319,6 +319,8 @@ struct Vertex {
     /// Lanes whose normal is longer than 1 (beyond rounding).
     long_normal: Mask,
     eye_direction: V3,
+    /// n·e: the normal's component along `eye_direction`.
+    normal_dot_eye: F,
 }
 
 with_features! {
@@ -443,6 +445,7 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool, con
         normal,
         long_normal: normal_scale.gt(F::splat(1.0)),
         eye_direction,
+        normal_dot_eye: if LOCAL_VIEWER { normal.dot(eye_direction) } else { normal.z },
     };
     let mut sums = Sums {
         ambient: V3::zero(),
@@ -581,7 +584,8 @@ fn add_light<
         let half = to_light + vertex.eye_direction;
         let length_squared = half.dot(half);
         sums.refused = sums.refused | length_squared.lt(F::splat(SHORTEST_HALF_SQUARED));
-        normal.dot(half) * reciprocal_sqrt(length_squared)
+        // n·(L + e) as n·L + n·e: the second is the vertex's, once for every light.
+        (n_dot_l + vertex.normal_dot_eye) * reciprocal_sqrt(length_squared)
     } else {
         normal.dot(broadcast3(&light.infinite_half))
     };
