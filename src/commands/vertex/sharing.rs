@@ -4,7 +4,11 @@
 //! stops 23-27 sharing wins (immediate 1 light, 2 threads: 59.5 -> 51 ns/vertex, 8 of 8
 //! alternating pairs); on an AMD EPYC it lost (20.9 -> 23.3). So each context tries both
 //! and keeps the faster: a trial of each way, timed over its big primitives, then the
-//! winner for `KEPT_TRIALS` trials, then both again, the winner first.
+//! winner for `KEPT_TRIALS` trials, then both again, the winner first. A way that wins again
+//! is kept twice as long the next time (up to `MOST_KEPT_TRIALS`): each comparison lights a
+//! trial the slower way, and the first primitive of each change is not counted, which cost
+//! the 1-light immediate scene (16K-vertex trials of 4096-vertex primitives) about a tenth of
+//! its time against always sharing on the Emerald Rapids Xeon (17.5 against 15.6 ns/vertex).
 //!
 //! Only primitives that follow a big one are timed (two clock readings, at glBegin and
 //! glEnd), and only big ones count: a program of small primitives reads no clock, and the
@@ -24,8 +28,12 @@ const BIG_PRIMITIVE: u64 = 1024;
 /// Vertices of timed primitives a trial counts: about a millisecond's work.
 const TRIAL_VERTICES: u64 = 16 * 1024;
 
-/// Trials of the faster way before both are tried again.
+/// Trials of the faster way before both are tried again, after it first wins.
 const KEPT_TRIALS: u32 = 15;
+
+/// The most trials a way that keeps winning is kept for (each win again: twice as many and
+/// one): some 64 ms of lighting at 15 ns a vertex between two comparisons.
+const MOST_KEPT_TRIALS: u32 = 255;
 
 /// The way a primitive's batches are lit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -65,6 +73,8 @@ pub(crate) struct SharingChoice {
     tried: [Option<f64>; 2],
     /// Trials of `way`, the faster, still to go before the next comparison (0: comparing).
     kept: u32,
+    /// The way the last comparison kept, and for how many trials.
+    winner: Option<(Way, u32)>,
     /// Whether the last primitive was big: the next one is timed.
     after_big: bool,
     /// Whether the next big timed primitive is the first of `way`, which is not counted.
@@ -79,6 +89,7 @@ impl Default for SharingChoice {
             elapsed: Duration::ZERO,
             tried: [None; 2],
             kept: 0,
+            winner: None,
             after_big: true,
             settling: true,
         }
@@ -130,12 +141,17 @@ impl SharingChoice {
         self.tried[self.way.index()] = Some(per_vertex);
         match self.tried {
             [Some(alone), Some(shared)] => {
-                self.switch(if shared < alone {
+                let way = if shared < alone {
                     Way::Shared
                 } else {
                     Way::Alone
-                });
-                self.kept = KEPT_TRIALS;
+                };
+                self.kept = match self.winner {
+                    Some((last, kept)) if last == way => (2 * kept + 1).min(MOST_KEPT_TRIALS),
+                    _ => KEPT_TRIALS,
+                };
+                self.winner = Some((way, self.kept));
+                self.switch(way);
             }
             _ => self.switch(self.way.other()),
         }
@@ -180,6 +196,34 @@ mod tests {
         trial(&mut choice, 40);
         assert_eq!(choice.way, Way::Shared);
         assert_eq!(choice.kept, KEPT_TRIALS);
+    }
+
+    /// A way that wins again is kept twice as long (and one trial), up to
+    /// `MOST_KEPT_TRIALS`; when the other wins, it is kept `KEPT_TRIALS`.
+    #[test]
+    fn a_way_that_wins_again_is_kept_longer() {
+        let mut choice = SharingChoice::default();
+        trial(&mut choice, 40);
+        trial(&mut choice, 50);
+        assert_eq!((choice.way, choice.kept), (Way::Shared, KEPT_TRIALS));
+        let mut kept = Vec::new();
+        for _ in 0..6 {
+            // The kept trials of sharing, then the comparison's trial alone, slower again.
+            while choice.kept > 0 {
+                trial(&mut choice, 40);
+            }
+            assert_eq!(choice.way, Way::Alone, "compared again");
+            trial(&mut choice, 50);
+            assert_eq!(choice.way, Way::Shared);
+            kept.push(choice.kept);
+        }
+        assert_eq!(kept, [31, 63, 127, 255, 255, 255]);
+        // Alone wins: kept for as long as the first time.
+        while choice.kept > 0 {
+            trial(&mut choice, 40);
+        }
+        trial(&mut choice, 30);
+        assert_eq!((choice.way, choice.kept), (Way::Alone, KEPT_TRIALS));
     }
 
     /// The first big primitive of each way, however slow, counts for nothing.
