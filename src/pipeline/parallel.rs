@@ -41,6 +41,16 @@ struct FreeList<C> {
     sleeping: usize,
 }
 
+impl<C> FreeList<C> {
+    /// A free buffer, `Err` if none is free; `Ok(None)` when the draw is over.
+    fn pop(&mut self) -> Result<Option<C>, ()> {
+        match self.chunks.as_mut() {
+            None => Ok(None),
+            Some(free) => free.pop().map(Some).ok_or(()),
+        }
+    }
+}
+
 impl<C> FreeChunks<C> {
     fn new(chunks: Vec<C>) -> FreeChunks<C> {
         FreeChunks {
@@ -56,33 +66,23 @@ impl<C> FreeChunks<C> {
         self.chunks.lock().unwrap_or_else(|e| e.into_inner())
     }
 
-    /// A free buffer, `Err` if none is free; `Ok(None)` when the draw is over.
-    fn try_take(&self) -> Result<Option<C>, ()> {
-        match self.lock().chunks.as_mut() {
-            None => Ok(None),
-            Some(free) => free.pop().map(Some).ok_or(()),
-        }
-    }
-
     /// A free buffer, waiting for one if `wait` (watching for `threads::SPIN`, then asleep);
     /// `None` when the draw is over (or, without `wait`, when none is free).
     fn take(&self, wait: bool) -> Option<C> {
         if !wait {
-            return self.try_take().ok().flatten();
+            return self.lock().pop().ok().flatten();
         }
-        if let Some(found) = watch(|| self.try_take().ok()) {
+        if let Some(found) = watch(|| self.lock().pop().ok()) {
             return found;
         }
         let mut free = self.lock();
         loop {
-            match free.chunks.as_mut()?.pop() {
-                Some(chunk) => return Some(chunk),
-                None => {
-                    free.sleeping += 1;
-                    free = self.returned.wait(free).unwrap_or_else(|e| e.into_inner());
-                    free.sleeping -= 1;
-                }
+            if let Ok(found) = free.pop() {
+                return found;
             }
+            free.sleeping += 1;
+            free = self.returned.wait(free).unwrap_or_else(|e| e.into_inner());
+            free.sleeping -= 1;
         }
     }
 

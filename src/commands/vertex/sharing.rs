@@ -73,8 +73,8 @@ pub(crate) struct SharingChoice {
     tried: [Option<f64>; 2],
     /// Trials of `way`, the faster, still to go before the next comparison (0: comparing).
     kept: u32,
-    /// The way the last comparison kept, and for how many trials.
-    winner: Option<(Way, u32)>,
+    /// Trials the last comparison's winner was kept for (0 before the first comparison).
+    last_kept: u32,
     /// Whether the last primitive was big: the next one is timed.
     after_big: bool,
     /// Whether the next big timed primitive is the first of `way`, which is not counted.
@@ -89,7 +89,7 @@ impl Default for SharingChoice {
             elapsed: Duration::ZERO,
             tried: [None; 2],
             kept: 0,
-            winner: None,
+            last_kept: 0,
             after_big: true,
             settling: true,
         }
@@ -146,11 +146,14 @@ impl SharingChoice {
                 } else {
                     Way::Alone
                 };
-                self.kept = match self.winner {
-                    Some((last, kept)) if last == way => (2 * kept + 1).min(MOST_KEPT_TRIALS),
-                    _ => KEPT_TRIALS,
+                // A round after the first begins with the way kept and ends with a trial of
+                // the other, this one: the kept way won again unless this one won.
+                self.kept = if self.last_kept > 0 && way != self.way {
+                    (2 * self.last_kept + 1).min(MOST_KEPT_TRIALS)
+                } else {
+                    KEPT_TRIALS
                 };
-                self.winner = Some((way, self.kept));
+                self.last_kept = self.kept;
                 self.switch(way);
             }
             _ => self.switch(self.way.other()),
