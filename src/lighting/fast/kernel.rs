@@ -105,26 +105,41 @@ impl V3 {
     }
 }
 
-with_features! {
-/// `V3::splat` of constants in memory (`F::broadcast`).
-#[inline]
-fn broadcast3(v: &[f32; 3]) -> V3 {
-    V3 {
-        x: F::broadcast(&v[0]),
-        y: F::broadcast(&v[1]),
-        z: F::broadcast(&v[2]),
-    }
+/// A constant of light `$light` in every lane, broadcast from its place in the `FastLight`:
+/// `constant!(light, field)` for an f32 field, `constant!(light, field[i])` for an array's
+/// element (`i` a constant once the face loop is unrolled).
+macro_rules! constant {
+    ($light:expr, $field:ident) => {
+        F::broadcast_at::<{ std::mem::offset_of!(FastLight, $field) }, FastLight>($light)
+    };
+    ($light:expr, $field:ident[$index:expr]) => {
+        match $index {
+            0 => F::broadcast_at::<{ std::mem::offset_of!(FastLight, $field) }, FastLight>($light),
+            1 => F::broadcast_at::<{ std::mem::offset_of!(FastLight, $field) + 4 }, FastLight>($light),
+            _ => F::broadcast_at::<{ std::mem::offset_of!(FastLight, $field) + 8 }, FastLight>($light),
+        }
+    };
 }
+
+/// A 3-component constant of light `$light` in every lane.
+macro_rules! constant3 {
+    ($light:expr, $field:ident) => {
+        V3 {
+            x: constant!($light, $field[0]),
+            y: constant!($light, $field[1]),
+            z: constant!($light, $field[2]),
+        }
+    };
 }
 
 with_features! {
 /// `sum + weight * color`.
 #[inline]
-fn add_weighted(sum: V3, weight: F, color: &[f32; 3]) -> V3 {
+fn add_weighted(sum: V3, weight: F, color: V3) -> V3 {
     V3 {
-        x: weight.mul_add(F::broadcast(&color[0]), sum.x),
-        y: weight.mul_add(F::broadcast(&color[1]), sum.y),
-        z: weight.mul_add(F::broadcast(&color[2]), sum.z),
+        x: weight.mul_add(color.x, sum.x),
+        y: weight.mul_add(color.y, sum.y),
+        z: weight.mul_add(color.z, sum.z),
     }
 }
 }
@@ -523,17 +538,19 @@ fn add_light<
 ) {
     let one = F::splat(1.0);
     let (to_light, attenuation) = if POSITIONAL {
-        let offset = broadcast3(&light.position) - vertex.position;
+        let offset = constant3!(light, position) - vertex.position;
         let distance_squared = offset.dot(offset);
         let inverse_distance = reciprocal_sqrt(distance_squared);
         let distance = distance_squared * inverse_distance;
         // The direction carries the positions' rounding divided by the distance.
-        let conditioning = vertex.conditioning + F::broadcast(&light.conditioning);
+        let conditioning = vertex.conditioning + constant!(light, conditioning);
         sums.refused = sums.refused | distance.lt(conditioning.max(F::splat(1e-6)));
         let to_light = offset.scale(inverse_distance);
         let attenuation = if ATTENUATION {
-            let [k0, k1, k2] = &light.attenuation_factors;
-            let denominator = distance.mul_add(distance.mul_add(F::broadcast(k2), F::broadcast(k1)), F::broadcast(k0));
+            let k0 = constant!(light, attenuation_factors[0]);
+            let k1 = constant!(light, attenuation_factors[1]);
+            let k2 = constant!(light, attenuation_factors[2]);
+            let denominator = distance.mul_add(distance.mul_add(k2, k1), k0);
             if light.checks_attenuation {
                 sums.refused = sums.refused | denominator.lt(F::splat(1.0 / 1024.0));
             }
@@ -543,16 +560,16 @@ fn add_light<
         };
         (to_light, attenuation)
     } else {
-        (broadcast3(&light.position), None)
+        (constant3!(light, position), None)
     };
     // The spot factor and its slope over the exponent, 0 outside the cone.
     let spot = if SPOT {
-        let cos_angle = to_light.dot(broadcast3(&light.spot_axis_to_light));
-        let cutoff = F::broadcast(&light.spot_cos_cutoff);
+        let cos_angle = to_light.dot(constant3!(light, spot_axis_to_light));
+        let cutoff = constant!(light, spot_cos_cutoff);
         sums.refused = sums.refused | (cos_angle - cutoff).abs().lt(F::splat(DISCONTINUITY));
         let inside = cos_angle.ge(cutoff);
         // Where the normal is longer than 1, the terms the spot factor weighs are not bounded.
-        let small = cos_angle.lt(F::broadcast(&light.smallest_spot_base)) & !vertex.long_normal;
+        let small = cos_angle.lt(constant!(light, smallest_spot_base)) & !vertex.long_normal;
         let (below, power) = power_and_below(cos_angle.max(F::zero()), light.spot_exponent, small);
         let below = match attenuation {
             Some(a) => inside.keep_product(a, below),
@@ -575,7 +592,7 @@ fn add_light<
         (None, None) => one,
     };
     if light.has_ambient {
-        sums.ambient = add_weighted(sums.ambient, weight, &light.ambient);
+        sums.ambient = add_weighted(sums.ambient, weight, constant3!(light, ambient));
     }
 
     let normal = vertex.normal;
@@ -587,11 +604,11 @@ fn add_light<
         // n·(L + e) as n·L + n·e: the second is the vertex's, once for every light.
         (n_dot_l + vertex.normal_dot_eye) * reciprocal_sqrt(length_squared)
     } else {
-        normal.dot(broadcast3(&light.infinite_half))
+        normal.dot(constant3!(light, infinite_half))
     };
     // Whether the specular term counts changes at n·L = 0.
     sums.refused = sums.refused | n_dot_l.abs().lt(F::splat(DISCONTINUITY));
-    sums.sensitivity = weight.mul_add(F::broadcast(&light.term_bounds[1]), sums.sensitivity);
+    sums.sensitivity = weight.mul_add(constant!(light, term_bounds[1]), sums.sensitivity);
     let face_count = if TWO_SIDE { 2 } else { 1 };
     // The faces see n·h and -n·h, of which one at most is positive: with one shininess
     // (and a power of 0 that is 0), one power of |n·h| serves both.
@@ -618,15 +635,15 @@ fn add_light<
         let ((below, power), counts) = match shared {
             Some(powers) => (powers, lit & n_dot_h.gt(F::zero())),
             None => {
-                let small = n_dot_h.lt(F::broadcast(&light.smallest_specular_base[face]));
+                let small = n_dot_h.lt(constant!(light, smallest_specular_base[face]));
                 (power_and_below(n_dot_h.max(F::zero()), fast.shininess, small), lit)
             }
         };
         let power = counts.keep(power);
-        sums.diffuse[face] = add_weighted(sums.diffuse[face], weight * diffuse, &light.diffuse);
-        sums.specular[face] = add_weighted(sums.specular[face], weight * power, &light.specular);
+        sums.diffuse[face] = add_weighted(sums.diffuse[face], weight * diffuse, constant3!(light, diffuse));
+        sums.specular[face] = add_weighted(sums.specular[face], weight * power, constant3!(light, specular));
         sums.specular_sensitivity[face] = counts.keep_product(weight, below).mul_add(
-            F::broadcast(&light.specular_sensitivity[face]),
+            constant!(light, specular_sensitivity[face]),
             sums.specular_sensitivity[face],
         );
         if SPOT {
@@ -634,10 +651,10 @@ fn add_light<
         }
     }
     if let Some(below) = spot_below {
-        let [ambient, diffuse, specular] = &light.spot_term_bounds;
-        let terms = F::broadcast(diffuse).mul_add(
+        let terms = constant!(light, spot_term_bounds[1]).mul_add(
             n_dot_l.abs(),
-            F::broadcast(specular).mul_add(largest_power, F::broadcast(ambient)),
+            constant!(light, spot_term_bounds[2])
+                .mul_add(largest_power, constant!(light, spot_term_bounds[0])),
         );
         sums.sensitivity = below.mul_add(terms, sums.sensitivity);
     }

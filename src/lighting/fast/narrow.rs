@@ -76,17 +76,21 @@ impl F {
         F(unsafe { _mm256_set1_ps(value) })
     }
 
-    /// `*value` in every lane, broadcast from memory (see the wide type's).
+    /// The f32 at byte `OFFSET` of `*base` in every lane, broadcast from memory (see the wide
+    /// type's).
     #[target_feature(enable = "avx")]
     #[inline]
-    pub(super) fn broadcast(value: &f32) -> F {
-        let lanes: __m256;
-        // SAFETY: reads the 4 bytes of `value`.
+    pub(super) fn broadcast_at<const OFFSET: usize, T>(base: &T) -> F {
+        const { assert!(OFFSET + 4 <= size_of::<T>() && OFFSET.is_multiple_of(4)) };
+        let lanes;
+        // SAFETY: reads 4 bytes inside `*base` (the assertion above), aligned as an f32
+        // within `T` (whose fields there are f32).
         unsafe {
             std::arch::asm!(
-                "vbroadcastss {lanes}, dword ptr [{value}]",
+                "vbroadcastss {lanes}, dword ptr [{base} + {offset}]",
                 lanes = out(ymm_reg) lanes,
-                value = in(reg) value,
+                base = in(reg) base,
+                offset = const OFFSET,
                 options(pure, readonly, nostack, preserves_flags),
             )
         };
@@ -135,6 +139,18 @@ impl F {
     #[inline(always)]
     pub(super) fn div(self, other: F) -> F {
         F(unsafe { _mm256_div_ps(self.0, other.0) })
+    }
+
+    /// 1/√x to 12 bits (AVX).
+    #[inline(always)]
+    pub(super) fn reciprocal_sqrt_estimate_12(self) -> F {
+        F(unsafe { _mm256_rsqrt_ps(self.0) })
+    }
+
+    /// 1/x to 12 bits (AVX).
+    #[inline(always)]
+    pub(super) fn reciprocal_estimate_12(self) -> F {
+        F(unsafe { _mm256_rcp_ps(self.0) })
     }
 
     /// 1/√x to 14 bits: AVX-512 VL only (the kernel's AVX-512 modules).

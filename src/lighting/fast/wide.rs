@@ -89,19 +89,23 @@ impl F {
         F(unsafe { _mm512_set1_ps(value) })
     }
 
-    /// `*value` in every lane, broadcast from memory by the load unit: the compiler would
-    /// otherwise load a light's neighboring constants together and spread each with shuffles,
-    /// on the port that the arithmetic needs.
+    /// The f32 at byte `OFFSET` of `*base` in every lane, broadcast from memory by the load
+    /// unit: the compiler would otherwise load a light's neighboring constants together and
+    /// spread each with shuffles, on the port that the arithmetic needs. The address is the
+    /// base register and the offset, not one more register computed for each constant.
     #[target_feature(enable = "avx512f")]
     #[inline]
-    pub(super) fn broadcast(value: &f32) -> F {
-        let lanes: __m512;
-        // SAFETY: reads the 4 bytes of `value`.
+    pub(super) fn broadcast_at<const OFFSET: usize, T>(base: &T) -> F {
+        const { assert!(OFFSET + 4 <= size_of::<T>() && OFFSET.is_multiple_of(4)) };
+        let lanes;
+        // SAFETY: reads 4 bytes inside `*base` (the assertion above), aligned as an f32
+        // within `T` (whose fields there are f32).
         unsafe {
             std::arch::asm!(
-                "vbroadcastss {lanes}, dword ptr [{value}]",
+                "vbroadcastss {lanes}, dword ptr [{base} + {offset}]",
                 lanes = out(zmm_reg) lanes,
-                value = in(reg) value,
+                base = in(reg) base,
+                offset = const OFFSET,
                 options(pure, readonly, nostack, preserves_flags),
             )
         };

@@ -1,7 +1,8 @@
 //! The fast engine's kernel for x86-64, written once (`kernel.rs`) over thin lane types and
-//! compiled twice: for AVX2 with FMA over eight lanes in a `__m256` (`narrow.rs`: one block
-//! of the pipeline at a time), and for AVX-512 over sixteen lanes in a `__m512` (`wide.rs`:
-//! two blocks at a time, so each chain of dependent operations serves twice the vertices).
+//! compiled for each: for AVX2 with FMA over sixteen lanes in two `__m256` (`pair.rs`: two
+//! blocks of the pipeline at a time) and over eight in one (`narrow.rs`: a block without a
+//! pair), and for AVX-512 over sixteen lanes in a `__m512` (`wide.rs`: two blocks at a time,
+//! so each chain of dependent operations serves twice the vertices) and eight in a `__m256`.
 //! The lane types' operations are `#[inline(always)]` and only ever run inside the kernel's
 //! functions, which carry their instruction set's target features and are only called once
 //! the CPU was found to have them. Besides the C ABI layer, this is the crate's only
@@ -14,6 +15,8 @@ use crate::pipeline::block::{InputBlock, OutputBlock};
 
 #[path = "narrow.rs"]
 mod narrow;
+#[path = "pair.rs"]
+mod pair;
 #[path = "wide.rs"]
 mod wide;
 
@@ -29,35 +32,68 @@ pub(super) fn kernel() -> Option<Kernel> {
 
 /// The kernel for `set`, or `None` when the CPU lacks it.
 pub(super) fn kernel_for(set: InstructionSet) -> Option<Kernel> {
-    {
-        let avx2 = is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma");
-        let avx512 = is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512vl");
-        if set == InstructionSet::Avx512 && avx2 && avx512 {
-            Some(|state, reads, inputs, outputs, refused| {
-                // Pairs of blocks in sixteen lanes, an odd last block in eight: the same
-                // operations lane by lane, so a vertex's result does not depend on its pairing.
-                let count = inputs.len().min(outputs.len()).min(refused.len());
-                let pairs = count - count % 2;
-                // SAFETY: the CPU has the features both are compiled with.
-                unsafe {
-                    avx512::process_blocks(state, reads, &inputs[..pairs], outputs, refused);
-                    avx512_narrow::process_blocks(
-                        state,
-                        reads,
-                        &inputs[pairs..count],
-                        &mut outputs[pairs..],
-                        &mut refused[pairs..],
-                    );
-                }
-            })
-        } else if set == InstructionSet::Avx2 && avx2 {
-            // SAFETY: the CPU has the features `avx2::process_blocks` is compiled with.
-            Some(|state, reads, inputs, outputs, refused| unsafe {
-                avx2::process_blocks(state, reads, inputs, outputs, refused)
-            })
-        } else {
-            None
-        }
+    let avx2 = is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma");
+    let avx512 = is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512vl");
+    if set == InstructionSet::Avx512 && avx2 && avx512 {
+        // SAFETY: the CPU has the features both are compiled with.
+        Some(|state, reads, inputs, outputs, refused| unsafe {
+            in_pairs(
+                avx512::process_blocks,
+                avx512_narrow::process_blocks,
+                state,
+                reads,
+                inputs,
+                outputs,
+                refused,
+            )
+        })
+    } else if set == InstructionSet::Avx2 && avx2 {
+        // SAFETY: the CPU has the features both are compiled with.
+        Some(|state, reads, inputs, outputs, refused| unsafe {
+            in_pairs(
+                avx2_pair::process_blocks,
+                avx2::process_blocks,
+                state,
+                reads,
+                inputs,
+                outputs,
+                refused,
+            )
+        })
+    } else {
+        None
+    }
+}
+
+/// A `Kernel` compiled with target features.
+type Compiled = unsafe fn(&FastState, Reads, &[InputBlock], &mut [OutputBlock], &mut [u8]);
+
+/// Pairs of blocks by `paired` (sixteen lanes), an odd last block by `single` (eight): the
+/// same operations lane by lane, so a vertex's result does not depend on its pairing.
+///
+/// # Safety
+/// The CPU has the features both kernels are compiled with.
+unsafe fn in_pairs(
+    paired: Compiled,
+    single: Compiled,
+    state: &FastState,
+    reads: Reads,
+    inputs: &[InputBlock],
+    outputs: &mut [OutputBlock],
+    refused: &mut [u8],
+) {
+    let count = inputs.len().min(outputs.len()).min(refused.len());
+    let pairs = count - count % 2;
+    // SAFETY: the caller's.
+    unsafe {
+        paired(state, reads, &inputs[..pairs], outputs, refused);
+        single(
+            state,
+            reads,
+            &inputs[pairs..count],
+            &mut outputs[pairs..],
+            &mut refused[pairs..],
+        );
     }
 }
 
@@ -85,7 +121,49 @@ macro_rules! newton_reciprocals {
     };
 }
 
-/// The kernel compiled for AVX2 with FMA, a block at a time.
+/// `reciprocal_sqrt` and `reciprocal` from AVX's 12-bit estimates, by one third-order step
+/// each (about 1 unit in the last place, as the square root and division they replace: both
+/// go to the divider): the same operations in the pair kernel and the one-block one.
+macro_rules! estimate_reciprocals {
+    () => {
+        with_features! {
+            /// 1/√x from the 12-bit estimate y by one third-order step: with r = 1 - x·y²,
+            /// y·(1 + r/2 + 3r²/8), whose truncation (5r³/16, r < 2^-10.4) lies far below the
+            /// step's own rounding (about 1 unit in the last place, as the square root and
+            /// division it replaces: both go to the divider, which the 8-spot kernel waited on).
+            #[inline]
+            fn reciprocal_sqrt(x: F) -> F {
+                let y = x.reciprocal_sqrt_estimate_12();
+                let r = (x * y).mul_add(-y, F::splat(1.0));
+                let correction = r.mul_add(F::splat(0.375), F::splat(0.5)) * r;
+                y.mul_add(correction, y)
+            }
+
+            /// 1/x from the 12-bit estimate y by one third-order step: with r = 1 - x·y,
+            /// y·(1 + r + r²).
+            #[inline]
+            fn reciprocal(x: F) -> F {
+                let y = x.reciprocal_estimate_12();
+                let r = x.mul_add(-y, F::splat(1.0));
+                y.mul_add(r.mul_add(r, r), y)
+            }
+        }
+    };
+}
+
+/// The kernel compiled for AVX2 with FMA, two blocks at a time (as two `__m256`).
+mod avx2_pair {
+    use super::pair as lanes;
+
+    /// Gives an item the module's target features.
+    macro_rules! with_features {
+        ($($item:item)*) => { $(#[target_feature(enable = "avx,avx2,fma")] $item)* };
+    }
+    estimate_reciprocals!();
+    include!("kernel.rs");
+}
+
+/// The kernel compiled for AVX2 with FMA, a block at a time: for a block without a pair.
 mod avx2 {
     use super::narrow as lanes;
 
@@ -93,19 +171,7 @@ mod avx2 {
     macro_rules! with_features {
         ($($item:item)*) => { $(#[target_feature(enable = "avx,avx2,fma")] $item)* };
     }
-    with_features! {
-        /// 1/√x, correctly rounded twice: AVX2's estimate has too few bits.
-        #[inline]
-        fn reciprocal_sqrt(x: F) -> F {
-            F::splat(1.0).div(x.sqrt())
-        }
-
-        /// 1/x, correctly rounded.
-        #[inline]
-        fn reciprocal(x: F) -> F {
-            F::splat(1.0).div(x)
-        }
-    }
+    estimate_reciprocals!();
     include!("kernel.rs");
 }
 
