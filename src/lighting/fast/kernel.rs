@@ -497,8 +497,27 @@ fn group_of<const LIT: bool, const TWO_SIDE: bool, const LOCAL_VIEWER: bool, con
         // The lowest color channel before clamping: a face whose every channel exceeds 1 by
         // more than its error clamps to the same colors, however large the error.
         let mut lowest = F::splat(f32::INFINITY);
-        let (primary, secondary) =
-            face_colors(state, face, &sums, &color, &mut refused, &mut lowest);
+        // The face's primary and secondary colors from the light sums (§2.14.1), written
+        // here rather than in a function of their own: with the pair lanes the compiler
+        // kept that one out of line, and the sums in memory for it.
+        let fast = &state.faces[face];
+        let diffuse = material_property(fast, MaterialMask::DIFFUSE, fast.diffuse, &color);
+        let ambient = material_property(fast, MaterialMask::AMBIENT, fast.ambient, &color);
+        let emission = material_property(fast, MaterialMask::EMISSION, fast.emission, &color);
+        let specular = material_property(fast, MaterialMask::SPECULAR, fast.specular, &color);
+        let scene = V3::splat(state.scene_ambient) + sums.ambient;
+        let unlit = rgb(&emission) + rgb(&ambient).mul(scene);
+        let lit_diffuse = unlit + rgb(&diffuse).mul(sums.diffuse[face]);
+        let lit_specular = rgb(&specular).mul(sums.specular[face]);
+        let (primary, secondary) = if state.separate_specular {
+            (
+                clamp_rgba(lit_diffuse, diffuse[3], &mut refused, &mut lowest),
+                clamp_rgba(lit_specular, F::zero(), &mut refused, &mut lowest),
+            )
+        } else {
+            let sum = lit_diffuse + lit_specular;
+            (clamp_rgba(sum, diffuse[3], &mut refused, &mut lowest), [F::zero(); 4])
+        };
         // One-sided, the back's colors are the front's, stored from registers too.
         if face == 0 {
             store4!(primary, outs, front_primary);
@@ -696,37 +715,3 @@ fn clamp_rgba(c: V3, alpha: F, refused: &mut Mask, lowest: &mut F) -> [F; 4] {
     [clamp01(c.x), clamp01(c.y), clamp01(c.z), clamp01(alpha)]
 }
 }
-
-with_features! {
-/// One face's primary and secondary colors from the light sums (§2.14.1).
-#[inline]
-fn face_colors(
-    state: &FastState,
-    face: usize,
-    sums: &Sums,
-    color: &[F; 4],
-    refused: &mut Mask,
-    lowest: &mut F,
-) -> ([F; 4], [F; 4]) {
-    let fast = &state.faces[face];
-    let diffuse = material_property(fast, MaterialMask::DIFFUSE, fast.diffuse, color);
-    let ambient = material_property(fast, MaterialMask::AMBIENT, fast.ambient, color);
-    let emission = material_property(fast, MaterialMask::EMISSION, fast.emission, color);
-    let specular = material_property(fast, MaterialMask::SPECULAR, fast.specular, color);
-    let unlit = rgb(&emission) + rgb(&ambient).mul(V3::splat(state.scene_ambient) + sums.ambient);
-    let lit_diffuse = unlit + rgb(&diffuse).mul(sums.diffuse[face]);
-    let lit_specular = rgb(&specular).mul(sums.specular[face]);
-    if state.separate_specular {
-        (
-            clamp_rgba(lit_diffuse, diffuse[3], refused, lowest),
-            clamp_rgba(lit_specular, F::zero(), refused, lowest),
-        )
-    } else {
-        (
-            clamp_rgba(lit_diffuse + lit_specular, diffuse[3], refused, lowest),
-            [F::zero(); 4],
-        )
-    }
-}
-}
-
