@@ -72,7 +72,7 @@ pub(super) fn kernel_for(set: InstructionSet) -> Option<Kernel> {
 /// The fewest lights for which AVX2 lights two blocks at a time: what the pair shares (a
 /// light's constants, the control of its powers' loops) grows with the lights, and what it
 /// costs (AVX2's sixteen registers holding half as many values) does not. On the AMD EPYC
-/// (Zen 3), lowest of 14-20 alternating processes, 20,000 points on one thread: one
+/// (Zen 3), lowest of 14-16 alternating processes, 20,000 points on one thread: one
 /// directional light 11.4 ns/vertex a block at a time, 12.2 paired; one attenuated spot light
 /// 21.2 and 22.1; two 19.5 and 18.9; eight (the bulk call) 42.9 and 38.6 (1M points).
 const PAIRED_LIGHTS: usize = 2;
