@@ -107,18 +107,23 @@ impl V3 {
 
 /// A constant of light `$light` in every lane, broadcast from its place in the `FastLight`:
 /// `constant!(light, field)` for an f32 field, `constant!(light, field[i])` for an array's
-/// element (`i` a constant once the face loop is unrolled).
+/// element of an array of at most 3 (`i` a constant once the face loop is unrolled, so that
+/// the check and the match fold away).
 macro_rules! constant {
     ($light:expr, $field:ident) => {
         F::broadcast_at::<{ std::mem::offset_of!(FastLight, $field) }, FastLight>($light)
     };
-    ($light:expr, $field:ident[$index:expr]) => {
-        match $index {
-            0 => F::broadcast_at::<{ std::mem::offset_of!(FastLight, $field) }, FastLight>($light),
-            1 => F::broadcast_at::<{ std::mem::offset_of!(FastLight, $field) + 4 }, FastLight>($light),
-            _ => F::broadcast_at::<{ std::mem::offset_of!(FastLight, $field) + 8 }, FastLight>($light),
+    ($light:expr, $field:ident[$index:expr]) => {{
+        let light: &FastLight = $light;
+        let index: usize = $index;
+        assert!(index < light.$field.len());
+        match index {
+            0 => F::broadcast_at::<{ std::mem::offset_of!(FastLight, $field) }, FastLight>(light),
+            1 => F::broadcast_at::<{ std::mem::offset_of!(FastLight, $field) + 4 }, FastLight>(light),
+            2 => F::broadcast_at::<{ std::mem::offset_of!(FastLight, $field) + 8 }, FastLight>(light),
+            _ => unreachable!("arrays of at most 3"),
         }
-    };
+    }};
 }
 
 /// A 3-component constant of light `$light` in every lane.

@@ -134,15 +134,15 @@ macro_rules! newton_reciprocals {
 }
 
 /// `reciprocal_sqrt` and `reciprocal` from AVX's 12-bit estimates, by one third-order step
-/// each (about 1 unit in the last place, as the square root and division they replace: both
-/// go to the divider): the same operations in the pair kernel and the one-block one.
+/// each (about 1 unit in the last place, as the square root and division they replace, which
+/// both go to the one divider: the pair kernel would have doubled its work a step; alone, no
+/// change measured): the same operations in the pair kernel and the one-block one.
 macro_rules! estimate_reciprocals {
     () => {
         with_features! {
             /// 1/√x from the 12-bit estimate y by one third-order step: with r = 1 - x·y²,
             /// y·(1 + r/2 + 3r²/8), whose truncation (5r³/16, r < 2^-10.4) lies far below the
-            /// step's own rounding (about 1 unit in the last place, as the square root and
-            /// division it replaces: both go to the divider, which the 8-spot kernel waited on).
+            /// step's own rounding.
             #[inline]
             fn reciprocal_sqrt(x: F) -> F {
                 let y = x.reciprocal_sqrt_estimate_12();
