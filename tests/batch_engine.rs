@@ -633,18 +633,24 @@ fn fast_engine_is_within_1e5_of_the_scalar_path() {
 
 /// Every instruction set the kernel is compiled for that this CPU has (whichever the engine
 /// would pick): the lanes each serves within 1e-5 of the scalar path, positions exact, a
-/// block's results the same alone as paired with another (AVX-512 takes two at a time), and
-/// the same without the eye coordinates.
+/// block's results the same alone as paired with another (AVX-512 takes two at a time, AVX2
+/// with two lights or more), and the same without the eye coordinates.
 #[test]
 fn every_instruction_set_agrees_with_the_scalar_path() {
     let mut rng = Rng(777);
     let mut served = [0usize; 2];
+    // States AVX2 lights in pairs of blocks (two lights or more).
+    let mut paired = 0;
     for state in 0..400 {
         let mut ctx = random_fast_state(&mut rng, state);
         let derived = ctx.derived().clone();
         let Some(fast) = derived.fast.clone() else {
             continue;
         };
+        let lights = (0..8)
+            .filter(|&i| ctx.is_enabled(GL_LIGHT0 + i) == Ok(true))
+            .count();
+        paired += usize::from(ctx.is_enabled(GL_LIGHTING) == Ok(true) && lights >= 2);
         let (inputs, expected) = random_blocks::<3>(&mut rng, &derived);
         let faces = if state % 3 == 0 {
             Faces::Front
@@ -675,8 +681,8 @@ fn every_instruction_set_agrees_with_the_scalar_path() {
                     served[k] += 1;
                 }
             }
-            // The first block alone gives what it gave in the group (AVX-512: paired with
-            // the second in sixteen lanes, alone in eight).
+            // The first block alone gives what it gave in the group (AVX-512, and AVX2 with
+            // two lights or more: paired with the second in sixteen lanes, alone in eight).
             let mut alone = [OutputBlock::default()];
             let mut alone_refused = [0u8];
             kernel_blocks_on(
@@ -711,6 +717,7 @@ fn every_instruction_set_agrees_with_the_scalar_path() {
         }
     }
     eprintln!("lanes served: AVX2 {}, AVX-512 {}", served[0], served[1]);
+    assert!(paired >= 100, "{paired} states with two lights or more");
 }
 
 /// Large glDrawArrays(GL_POINTS) in feedback or selection mode run chunk by chunk on the
